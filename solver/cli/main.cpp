@@ -1,0 +1,2 @@
+#include <cstdio>
+int main() { std::puts("regio-solve"); return 0; }
