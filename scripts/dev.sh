@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Regio's one-stop developer script. On a fresh Debian 12 machine (as root, or
+# with sudo) it installs whatever is missing from Debian's packages, configures
+# and builds, then either opens the editor or runs the whole test suite.
+# Idempotent: a second run installs nothing and rebuilds only what changed.
+#
+#   scripts/dev.sh run [SCENE.json] [editor args...]   build, open the editor
+#   scripts/dev.sh test [ctest args...]                 build, run every test
+#   scripts/dev.sh build                                build only
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build="${REGIO_BUILD_DIR:-$root/build}"
+
+# Everything Regio needs, from Debian 12's archive only.
+packages=(
+  g++ cmake ninja-build pkg-config
+  qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  libglm-dev nlohmann-json3-dev libstb-dev libpng-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth libgl-dev libgl1-mesa-dri fonts-dejavu-core
+  python3 python3-jsonschema
+)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "regio: installing ${missing[*]}" >&2
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure_and_build() {
+  if [ ! -f "$build/build.ninja" ]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  fi
+  cmake --build "$build"
+}
+
+command=${1:-}
+[ $# -gt 0 ] && shift
+case "$command" in
+  run)
+    install_missing
+    configure_and_build
+    scene="$root/resources/scenes/two-lights-room.json"
+    if [ $# -gt 0 ] && [[ "$1" != -* ]]; then scene=$1; shift; fi
+    if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
+      # No screen: still useful with --screenshot, so run on a virtual one.
+      echo "regio: no display; running on a virtual X server (xvfb-run)" >&2
+      exec xvfb-run -a -s "-screen 0 1920x1200x24" "$build/editor/regio" "$scene" "$@"
+    fi
+    exec "$build/editor/regio" "$scene" "$@"
+    ;;
+  test)
+    install_missing
+    configure_and_build
+    exec ctest --test-dir "$build" --output-on-failure -j2 "$@"
+    ;;
+  build)
+    install_missing
+    configure_and_build
+    ;;
+  *)
+    echo "usage: scripts/dev.sh run [SCENE.json] [editor args...] | test [ctest args...] | build" >&2
+    exit 2
+    ;;
+esac
