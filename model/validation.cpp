@@ -1,16 +1,200 @@
 #include "model/validation.h"
 
-#include <string>
-#include <unordered_map>
+#include "model/validation_detail.h"
+
+#include <cmath>
+#include <cstdio>
 
 namespace regio::model {
 
-namespace {
+namespace detail {
 
+std::string materialPointer(size_t m) { return "/materials/" + std::to_string(m); }
+std::string objectPointer(size_t o) { return "/objects/" + std::to_string(o); }
+std::string partPointer(size_t o, size_t p) { return objectPointer(o) + "/parts/" + std::to_string(p); }
 std::string facePointer(size_t o, size_t p, size_t f)
 {
-    return "/objects/" + std::to_string(o) + "/parts/" + std::to_string(p) + "/faces/" +
-           std::to_string(f);
+    return partPointer(o, p) + "/faces/" + std::to_string(f);
+}
+std::string regionPointer(size_t r) { return "/regions/" + std::to_string(r); }
+
+std::vector<std::string> partPath(const ValidationContext& context, size_t o, size_t p)
+{
+    const Object& object = context.scene.objects[o];
+    return {object.id, object.parts[p].id};
+}
+
+std::vector<std::string> facePath(const ValidationContext& context, size_t o, size_t p, size_t f)
+{
+    const Object& object = context.scene.objects[o];
+    return {object.id, object.parts[p].id, object.parts[p].faces[f].id};
+}
+
+std::string formatValue(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", value);
+    return buffer;
+}
+
+std::string formatLength(double metres)
+{
+    const double magnitude = std::abs(metres);
+    if (magnitude >= 1.0 || magnitude == 0.0)
+        return formatValue(metres) + " m";
+    if (magnitude >= 1e-3)
+        return formatValue(metres * 1e3) + " mm";
+    return formatValue(metres * 1e6) + " \u00b5m";
+}
+
+std::string quoted(std::string_view id) { return "\"" + std::string(id) + "\""; }
+
+} // namespace detail
+
+namespace {
+
+using detail::ValidationContext;
+
+const char* kChannel[3] = {"red", "green", "blue"};
+
+// Ids are one namespace: a BSP order or an editor selection names an element
+// by id alone, so an id must not be shared across kinds either.
+void validateIds(ValidationContext& context)
+{
+    struct FirstUse {
+        std::string pointer;
+        const char* kind;
+    };
+    std::unordered_map<std::string_view, FirstUse> seen;
+    auto claim = [&](const std::string& id, const char* kind, const std::string& pointer,
+                     const std::vector<std::string>& idPath) {
+        if (id.empty()) {
+            context.error(std::string("the ") + kind + " has an empty id", pointer + "/id", idPath);
+            return;
+        }
+        auto [it, fresh] = seen.try_emplace(id, FirstUse{pointer, kind});
+        if (!fresh)
+            context.error("duplicate id " + detail::quoted(id) + ": already used by the " +
+                              it->second.kind + " at " + it->second.pointer,
+                          pointer + "/id", idPath);
+    };
+    const Scene& scene = context.scene;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        claim(scene.materials[m].id, "material", detail::materialPointer(m), {scene.materials[m].id});
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& object = scene.objects[o];
+        claim(object.id, "object", detail::objectPointer(o), {object.id});
+        for (size_t p = 0; p < object.parts.size(); ++p) {
+            claim(object.parts[p].id, "part", detail::partPointer(o, p), detail::partPath(context, o, p));
+            for (size_t f = 0; f < object.parts[p].faces.size(); ++f)
+                claim(object.parts[p].faces[f].id, "face", detail::facePointer(o, p, f),
+                      detail::facePath(context, o, p, f));
+        }
+    }
+    for (size_t r = 0; r < scene.regions.size(); ++r)
+        claim(scene.regions[r].id, "region", detail::regionPointer(r), {scene.regions[r].id});
+}
+
+void buildIndices(ValidationContext& context)
+{
+    const Scene& scene = context.scene;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        context.materialIndex.try_emplace(scene.materials[m].id, int(m));
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const auto& parts = scene.objects[o].parts;
+        for (size_t p = 0; p < parts.size(); ++p)
+            for (size_t f = 0; f < parts[p].faces.size(); ++f)
+                context.faceIndex.try_emplace(parts[p].faces[f].id,
+                                              detail::FaceLocation{int(o), int(p), int(f)});
+    }
+}
+
+void validateMaterials(ValidationContext& context)
+{
+    const Scene& scene = context.scene;
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const Material& material = scene.materials[m];
+        const std::string pointer = detail::materialPointer(m);
+        const std::string name = "material " + detail::quoted(material.id);
+        for (int c = 0; c < 3; ++c) {
+            const double r = material.reflectance[c];
+            const std::string at = pointer + "/reflectance/" + std::to_string(c);
+            if (!std::isfinite(r))
+                context.error(name + ": the " + kChannel[c] + " reflectance is not a finite number", at,
+                              {material.id});
+            else if (r < 0.0)
+                context.error(name + ": the " + kChannel[c] + " reflectance " + detail::formatValue(r) +
+                                  " is negative; reflectance lies in [0, 1)",
+                              at, {material.id});
+            else if (r >= 1.0)
+                context.error(name + ": the " + kChannel[c] + " reflectance " + detail::formatValue(r) +
+                                  " must be below 1, or the reflected energy never dies out and "
+                                  "the solution does not converge",
+                              at, {material.id});
+        }
+        for (int c = 0; c < 3; ++c) {
+            const double e = material.emission[c];
+            const std::string at = pointer + "/emission/" + std::to_string(c);
+            if (!std::isfinite(e))
+                context.error(name + ": the " + kChannel[c] + " emission is not a finite number", at,
+                              {material.id});
+            else if (e < 0.0)
+                context.error(name + ": the " + kChannel[c] + " emission " + detail::formatValue(e) +
+                                  " is negative; a surface cannot absorb light it was never given",
+                              at, {material.id});
+        }
+    }
+}
+
+// Unknown references, faces without any material, and whether anything emits.
+void validateMaterialUse(ValidationContext& context)
+{
+    const Scene& scene = context.scene;
+    auto find = [&](const std::string& id) -> const Material* {
+        auto it = context.materialIndex.find(id);
+        return it == context.materialIndex.end() ? nullptr : &scene.materials[size_t(it->second)];
+    };
+    auto emits = [](const Material* material) {
+        return material && std::isfinite(material->emission.x) && std::isfinite(material->emission.y) &&
+               std::isfinite(material->emission.z) &&
+               (material->emission.x > 0.0 || material->emission.y > 0.0 || material->emission.z > 0.0);
+    };
+    bool anyEmitter = false;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& object = scene.objects[o];
+        for (size_t p = 0; p < object.parts.size(); ++p) {
+            const Part& part = object.parts[p];
+            const Material* partMaterial = nullptr;
+            if (!part.material.empty()) {
+                partMaterial = find(part.material);
+                if (!partMaterial)
+                    context.error("part " + detail::quoted(part.id) + " uses the unknown material " +
+                                      detail::quoted(part.material),
+                                  detail::partPointer(o, p) + "/material", detail::partPath(context, o, p));
+            }
+            for (size_t f = 0; f < part.faces.size(); ++f) {
+                const Face& face = part.faces[f];
+                const Material* material = partMaterial;
+                if (!face.material.empty()) {
+                    material = find(face.material);
+                    if (!material)
+                        context.error("face " + detail::quoted(face.id) + " uses the unknown material " +
+                                          detail::quoted(face.material),
+                                      detail::facePointer(o, p, f) + "/material",
+                                      detail::facePath(context, o, p, f));
+                } else if (part.material.empty()) {
+                    context.error("face " + detail::quoted(face.id) + " has no material, and neither has part " +
+                                      detail::quoted(part.id) + ": give one to either",
+                                  detail::facePointer(o, p, f), detail::facePath(context, o, p, f));
+                }
+                anyEmitter = anyEmitter || emits(material);
+            }
+        }
+    }
+    if (!anyEmitter)
+        context.warning("no face emits light (no face uses a material with emission above 0): "
+                        "there is nothing to solve",
+                        "", {});
 }
 
 } // namespace
@@ -18,42 +202,13 @@ std::string facePointer(size_t o, size_t p, size_t f)
 Diagnostics validateScene(const Scene& scene)
 {
     Diagnostics out;
-    std::unordered_map<std::string, std::string> ids; // id -> pointer of first use
-    auto claim = [&](const std::string& id, const std::string& pointer,
-                     std::vector<std::string> idPath) {
-        if (id.empty()) {
-            out.push_back(makeError("empty id", pointer + "/id", std::move(idPath)));
-            return;
-        }
-        auto [it, fresh] = ids.emplace(id, pointer);
-        if (!fresh)
-            out.push_back(makeError("duplicate id \"" + id + "\" (first used at " + it->second + ")",
-                                    pointer + "/id", std::move(idPath)));
-    };
-    for (size_t m = 0; m < scene.materials.size(); ++m)
-        claim(scene.materials[m].id, "/materials/" + std::to_string(m), {scene.materials[m].id});
-    for (size_t o = 0; o < scene.objects.size(); ++o) {
-        const Object& object = scene.objects[o];
-        claim(object.id, "/objects/" + std::to_string(o), {object.id});
-        for (size_t p = 0; p < object.parts.size(); ++p) {
-            const Part& part = object.parts[p];
-            std::string pp = "/objects/" + std::to_string(o) + "/parts/" + std::to_string(p);
-            claim(part.id, pp, {object.id, part.id});
-            if (!part.material.empty() && !scene.findMaterial(part.material))
-                out.push_back(makeError("unknown material \"" + part.material + "\"",
-                                        pp + "/material", {object.id, part.id}));
-            for (size_t f = 0; f < part.faces.size(); ++f) {
-                const Face& face = part.faces[f];
-                claim(face.id, facePointer(o, p, f), {object.id, part.id, face.id});
-                if (!face.material.empty() && !scene.findMaterial(face.material))
-                    out.push_back(makeError("unknown material \"" + face.material + "\"",
-                                            facePointer(o, p, f) + "/material",
-                                            {object.id, part.id, face.id}));
-            }
-        }
-    }
-    for (size_t r = 0; r < scene.regions.size(); ++r)
-        claim(scene.regions[r].id, "/regions/" + std::to_string(r), {scene.regions[r].id});
+    ValidationContext context{scene, out, {}, {}, {}};
+    buildIndices(context);
+    validateIds(context);
+    validateMaterials(context);
+    validateMaterialUse(context);
+    detail::validateParts(context);
+    detail::validateRegions(context);
     return out;
 }
 
