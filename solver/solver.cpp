@@ -1,0 +1,202 @@
+#include "solver/solver.h"
+
+#include <chrono>
+
+namespace regio::solver {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::shared_ptr<const SolutionMesh> makeMesh(const PreparedScene& prepared, int revision)
+{
+    auto mesh = std::make_shared<SolutionMesh>();
+    mesh->revision = revision;
+    mesh->vertices = prepared.vertices;
+    mesh->triangles.reserve(prepared.elements.size());
+    mesh->normals.reserve(prepared.elements.size());
+    mesh->elementFace.reserve(prepared.elements.size());
+    mesh->reflectance.reserve(prepared.elements.size());
+    for (const Element& e : prepared.elements) {
+        const Properties& p = prepared.properties[static_cast<size_t>(e.properties)];
+        mesh->triangles.push_back(e.vertices);
+        mesh->normals.push_back(e.normal);
+        mesh->elementFace.push_back(p.face);
+        mesh->reflectance.push_back(p.reflectance);
+    }
+    mesh->faceIds.reserve(prepared.faces.size());
+    for (const InputFace& f : prepared.faces)
+        mesh->faceIds.push_back(f.id);
+    return mesh;
+}
+
+} // namespace
+
+const char* stopReasonName(StopReason reason)
+{
+    switch (reason) {
+    case StopReason::None: return "none";
+    case StopReason::Converged: return "converged";
+    case StopReason::MaxIterations: return "maxIterations";
+    case StopReason::NothingToShoot: return "nothingToShoot";
+    case StopReason::Cancelled: return "cancelled";
+    }
+    return "none";
+}
+
+Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptions& options)
+{
+    const auto start = Clock::now();
+    CreateResult result;
+    EffectiveSettings s;
+    s.hemicube = options.hemicube.value_or(scene.solver.hemicube);
+    s.maxIterations = options.maxIterations.value_or(scene.solver.maxIterations);
+    s.convergence = options.convergence.value_or(scene.solver.convergence);
+    s.patchSize = options.patchSize.value_or(scene.solver.patchSize);
+    s.elementsPerPatch = options.elementsPerPatch.value_or(scene.solver.elementsPerPatch);
+    s.visibility = options.visibility;
+    s.regions = options.regions;
+    if (s.hemicube < 2) {
+        result.diagnostics.push_back(model::makeError("the hemicube resolution must be at least 2", "/solver/hemicube"));
+        return result;
+    }
+
+    PrepareOptions prep;
+    prep.regions = s.regions;
+    prep.autoRegionPatchThreshold = options.autoRegionPatchThreshold;
+    prep.patchSize = s.patchSize;
+    prep.elementsPerPatch = s.elementsPerPatch;
+    PrepareResult prepared = prepareScene(scene, prep);
+    result.diagnostics = std::move(prepared.diagnostics);
+    if (!prepared.scene)
+        return result;
+
+    std::unique_ptr<Solver> solver(new Solver());
+    solver->m_settings = s;
+    solver->m_prepared = std::move(*prepared.scene);
+    solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility);
+    solver->m_mesh = makeMesh(solver->m_prepared, 0);
+    solver->m_stats.preprocessSeconds = secondsSince(start);
+    {
+        std::lock_guard<std::mutex> lock(solver->m_mutex);
+        solver->updateStatsLocked();
+    }
+    result.solver = std::move(solver);
+    return result;
+}
+
+Solver::~Solver() = default;
+
+void Solver::updateStatsLocked()
+{
+    m_stats.iterations = m_shooting->iterations();
+    m_stats.patches = static_cast<int>(m_prepared.patches.size());
+    m_stats.elements = static_cast<int>(m_prepared.elements.size());
+    m_stats.energy = m_shooting->energy();
+    m_stats.ambient = m_shooting->ambient();
+    m_stats.unshotRatio = m_shooting->unshotRatio();
+}
+
+int Solver::step(int n)
+{
+    int done = 0;
+    for (; done < n; ++done) {
+        const auto start = Clock::now();
+        const ShotResult r = m_shooting->shoot(nullptr, &m_mutex);
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_stats.shootSeconds += secondsSince(start);
+        if (r != ShotResult::Shot) {
+            m_stats.stop = StopReason::NothingToShoot;
+            break;
+        }
+        updateStatsLocked();
+    }
+    return done;
+}
+
+bool Solver::converged() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_stats.unshotRatio < m_settings.convergence;
+}
+
+StopReason Solver::run(const Progress& progress, const std::atomic<bool>& cancel)
+{
+    StopReason reason = StopReason::None;
+    while (reason == StopReason::None) {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            if (cancel.load())
+                reason = StopReason::Cancelled;
+            else if (m_stats.unshotRatio < m_settings.convergence)
+                reason = StopReason::Converged;
+            else if (m_stats.iterations >= m_settings.maxIterations)
+                reason = StopReason::MaxIterations;
+        }
+        if (reason != StopReason::None)
+            break;
+        const auto start = Clock::now();
+        const ShotResult r = m_shooting->shoot(&cancel, &m_mutex);
+        SolverStats copy;
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stats.shootSeconds += secondsSince(start);
+            if (r == ShotResult::Shot)
+                updateStatsLocked();
+            else
+                reason = r == ShotResult::Cancelled ? StopReason::Cancelled : StopReason::NothingToShoot;
+            copy = m_stats;
+        }
+        if (r == ShotResult::Shot && progress)
+            progress(copy);
+    }
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_stats.stop = reason;
+    return reason;
+}
+
+SolverStats Solver::stats() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_stats;
+}
+
+SolutionSnapshot Solver::snapshot() const
+{
+    SolutionSnapshot s;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    s.mesh = m_mesh;
+    s.radiosity = m_shooting->radiosity();
+    s.stats = m_stats;
+    return s;
+}
+
+std::vector<FaceResult> Solver::faceResults() const
+{
+    std::vector<FaceResult> out;
+    out.reserve(m_prepared.faces.size());
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const std::vector<Rgb>& b = m_shooting->radiosity();
+    for (const InputFace& f : m_prepared.faces) {
+        FaceResult r;
+        r.id = f.id;
+        r.area = f.area;
+        double area = 0.0;
+        for (int e : f.elements) {
+            const double a = m_prepared.elements[static_cast<size_t>(e)].area;
+            r.radiosity += b[static_cast<size_t>(e)] * a;
+            area += a;
+        }
+        if (area > 0.0)
+            r.radiosity /= area;
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+} // namespace regio::solver

@@ -1,0 +1,188 @@
+#include "solver/visibility.h"
+
+#include "solver/traversal.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+
+namespace regio::solver {
+
+const char* visibilityModeName(VisibilityMode mode)
+{
+    return mode == VisibilityMode::Painter ? "painter" : "zbuffer";
+}
+
+namespace {
+// How often (in elements) a render looks at the cancel flag: a relaxed
+// atomic load is cheap, but not per element.
+constexpr int kCancelCheckInterval = 256;
+} // namespace
+
+Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, VisibilityMode mode)
+    : m_scene(scene)
+    , m_hemicube(hemicube)
+    , m_mode(mode)
+    , m_raster(hemicube)
+{
+}
+
+ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == VisibilityMode::ZBuffer); }
+
+void Visibility::prepareFrame(const ShooterFrame& frame)
+{
+    m_frame = frame;
+    m_shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
+    const size_t count = m_scene.vertices.size();
+    if (m_stamp.size() != count) {
+        m_local.resize(count);
+        m_outcode.resize(count);
+        m_stamp.assign(count, 0);
+        m_currentStamp = 0;
+    }
+    if (++m_currentStamp == 0) { // wrapped: forget every stamp
+        std::fill(m_stamp.begin(), m_stamp.end(), 0);
+        m_currentStamp = 1;
+    }
+}
+
+inline void Visibility::touch(int vertex)
+{
+    const auto v = static_cast<size_t>(vertex);
+    if (m_stamp[v] == m_currentStamp)
+        return;
+    m_stamp[v] = m_currentStamp;
+    m_local[v] = m_frame.toLocal(m_scene.vertices[v]);
+    m_outcode[v] = hemicubeOutcode(m_local[v]);
+}
+
+bool Visibility::regionCulled(int region) const
+{
+    return boxBehindPlane(m_scene.regions[static_cast<size_t>(region)].bounds, m_shooterPlane);
+}
+
+template <class Paint>
+inline void Visibility::rasteriseElement(int element, Paint&& paint)
+{
+    ++m_stats.elementsVisited;
+    const Element& e = m_scene.elements[static_cast<size_t>(element)];
+    touch(e.vertices[0]);
+    touch(e.vertices[1]);
+    touch(e.vertices[2]);
+    const auto i0 = static_cast<size_t>(e.vertices[0]), i1 = static_cast<size_t>(e.vertices[1]),
+               i2 = static_cast<size_t>(e.vertices[2]);
+    const std::uint32_t andCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
+    // Outside every face: a bit of each face's group is set.
+    bool hidden = true;
+    for (int f = 0; f < kHemicubeFaceCount && hidden; ++f)
+        hidden = (andCode & faceOutcodeBits(f)) != 0;
+    if (hidden)
+        return;
+    ++m_stats.elementsRasterised;
+    const std::uint32_t orCode = m_outcode[i0] | m_outcode[i1] | m_outcode[i2];
+    const std::array<Vec3, 3> local{m_local[i0], m_local[i1], m_local[i2]};
+    m_raster.rasterize(local, orCode, andCode, paint);
+}
+
+void Visibility::paintElement(int element, ItemId id, ItemBuffer& buffer)
+{
+    const int n = m_hemicube.resolution();
+    rasteriseElement(element, [&](HemicubeFace f, int row, int x0, int x1) {
+        ItemId* ids = buffer.face(f) + row * n;
+        std::fill(ids + x0, ids + x1, id);
+    });
+}
+
+void Visibility::depthTestElement(int element, ItemId id, ItemBuffer& buffer)
+{
+    // Depth 1/w is affine in the face's screen coordinates and exact from the
+    // plane: with p = w (sx, sy, 1) in face coordinates and plane n.p + d = 0,
+    // 1/w = -(na sx + nb sy + nw) / d.
+    const Element& e = m_scene.elements[static_cast<size_t>(element)];
+    const Vec3 nLocal = m_frame.directionToLocal(e.normal);
+    const double dLocal = -glm::dot(nLocal, m_frame.toLocal(m_scene.vertices[static_cast<size_t>(e.vertices[0])]));
+    if (dLocal == 0.0)
+        return; // the plane contains the shooter's centre: seen edge-on
+    const int n = m_hemicube.resolution();
+    const double pixel = 2.0 / n;
+    rasteriseElement(element, [&](HemicubeFace f, int row, int x0, int x1) {
+        const Vec3 nf = faceCoordinates(f, nLocal);
+        const double sy = (row + 0.5) * pixel - (f == HemicubeFace::Top ? 1.0 : 0.0);
+        const double base = -(nf.y * sy + nf.z) / dLocal;
+        const double slope = -nf.x / dLocal;
+        ItemId* ids = buffer.face(f) + row * n;
+        float* depth = buffer.depth(f) + row * n;
+        for (int x = x0; x < x1; ++x) {
+            const double sx = (x + 0.5) * pixel - 1.0;
+            const auto inv = static_cast<float>(base + slope * sx);
+            if (inv > depth[x]) {
+                depth[x] = inv;
+                ids[x] = id;
+            }
+        }
+    });
+}
+
+bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+{
+    prepareFrame(frame);
+    buffer.clear();
+    int sinceCheck = 0;
+    bool cancelled = false;
+    auto shouldStop = [&](int elements) {
+        sinceCheck += elements;
+        if (cancel && sinceCheck >= kCancelCheckInterval) {
+            sinceCheck = 0;
+            cancelled = cancel->load(std::memory_order_relaxed);
+        }
+        return cancelled;
+    };
+
+    if (m_mode == VisibilityMode::Painter) {
+        forEachNodeBackToFront(
+            m_scene, frame.origin,
+            [&](int region) {
+                const bool culled = cancelled || regionCulled(region);
+                m_stats.regionsCulled += culled && !cancelled;
+                return !culled;
+            },
+            [&](int nodeIndex, bool eyeInFront) {
+                if (cancelled)
+                    return;
+                const BspNode& node = m_scene.nodes[static_cast<size_t>(nodeIndex)];
+                // The first forwardElements face along the node plane's normal:
+                // they receive when the eye is in front, block otherwise.
+                const int split = node.firstElement + node.forwardElements;
+                const int end = node.firstElement + node.elementCount;
+                for (int i = node.firstElement; i < end; ++i) {
+                    const bool receives = (i < split) == eyeInFront;
+                    paintElement(i, receives ? itemOfElement(static_cast<std::uint32_t>(i)) : kBlockerItem, buffer);
+                }
+                shouldStop(node.elementCount);
+            });
+        return !cancelled;
+    }
+
+    // Z-buffer: element array order, regions culled the same way.
+    std::vector<char>& culled = m_regionCulled;
+    culled.resize(m_scene.regions.size());
+    for (size_t r = 0; r < culled.size(); ++r) {
+        culled[r] = regionCulled(static_cast<int>(r));
+        m_stats.regionsCulled += culled[r];
+    }
+    const int count = static_cast<int>(m_scene.elements.size());
+    for (int i = 0; i < count; ++i) {
+        const Element& e = m_scene.elements[static_cast<size_t>(i)];
+        const int region = m_scene.nodes[static_cast<size_t>(e.node)].region;
+        if (region >= 0 && culled[static_cast<size_t>(region)])
+            continue;
+        const double facing = glm::dot(e.normal, frame.origin - m_scene.vertices[static_cast<size_t>(e.vertices[0])]);
+        depthTestElement(i, facing > 0.0 ? itemOfElement(static_cast<std::uint32_t>(i)) : kBlockerItem, buffer);
+        if (shouldStop(1))
+            return false;
+    }
+    return true;
+}
+
+} // namespace regio::solver
