@@ -98,6 +98,34 @@ void validateFaceGeometry(ValidationContext& context, size_t o, size_t p, size_t
                         pointer, facePath(context, o, p, f));
 }
 
+// All usable faces lie in one plane (within the tolerance of a face: a panel
+// may be folded along a diagonal): a panel or a single wall, which can only
+// be an open shell by nature, so its open edges are no news.
+bool isFlat(const Part& part, const std::vector<char>& usable)
+{
+    std::vector<Vec3> points;
+    for (size_t f = 0; f < part.faces.size(); ++f)
+        if (usable[f])
+            for (int v : part.faces[f].loop)
+                points.push_back(part.vertices[size_t(v)]);
+    if (points.empty())
+        return false;
+    Box3 bounds;
+    for (const Vec3& q : points)
+        bounds.extend(q);
+    const double tolerance = std::max(kDistanceEpsilon, kPlanarityError * glm::length(bounds.size()));
+    for (size_t f = 0; f < part.faces.size(); ++f) {
+        if (!usable[f])
+            continue;
+        const Plane plane = polygonPlane(loopPositions(part.vertices, part.faces[f].loop));
+        if (plane.normal == Vec3(0.0))
+            continue;
+        return std::all_of(points.begin(), points.end(),
+                           [&](const Vec3& q) { return std::abs(plane.signedDistance(q)) <= tolerance; });
+    }
+    return false;
+}
+
 void validateTopology(ValidationContext& context, size_t o, size_t p, const WingedEdgeMesh& mesh)
 {
     const Part& part = context.part(int(o), int(p));
@@ -140,12 +168,12 @@ void validateTopology(ValidationContext& context, size_t o, size_t p, const Wing
         if (!mesh.faceInTopology(f))
             return;
     const std::vector<int> boundary = mesh.boundaryEdges();
-    if (!boundary.empty())
+    if (!boundary.empty() && !isFlat(part, context.faceUsable[o][p]))
         context.warning("part " + quoted(part.id) + " is an open shell: " + std::to_string(boundary.size()) +
                             (boundary.size() == 1 ? " edge has" : " edges have") +
                             " only one face (the first between " + vertexPair(mesh.edge(boundary.front())) +
-                            "); fine for walls seen from one side, but a solid must be closed or light "
-                            "leaks through the gap",
+                            "); fine for walls seen from one side, but a solid must be closed or "
+                            "light leaks through the gap",
                         partPointer(o, p), partPath(context, o, p));
 }
 

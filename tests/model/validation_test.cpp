@@ -357,6 +357,17 @@ TEST(Validation, OpenPartIsAWarningThatNamesWalls)
     expectOnly(validateScene(scene), Severity::Warning, "/objects/0/parts/0", kBodyPath, "walls");
 }
 
+TEST(Validation, FlatOpenPanelIsNotWarnedAbout)
+{
+    // A lone quad (a wall, a lamp panel) is open by nature.
+    Part panel;
+    panel.id = "box.body";
+    panel.material = "white";
+    panel.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+    panel.faces = {Face{"box.body.a", {0, 1, 2, 3}, {}}, Face{"box.body.b", {1, 4, 5, 2}, {}}};
+    EXPECT_EQ(dump(validateScene(sceneWith(panel))), "");
+}
+
 // --- regions ---------------------------------------------------------------------
 
 TEST(Validation, RegionWithMinNotBelowMaxIsAnError)
