@@ -5,6 +5,7 @@
 
 #include "model/scene_json_detail.h"
 
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <map>
@@ -143,6 +144,39 @@ std::optional<Diagnostic> prescan(std::string_view text)
     return std::nullopt;
 }
 
+// The first byte of the complete token whose last byte is at `end` (a number,
+// a string, a literal or one structural character); text.size() at the end.
+std::size_t tokenStart(std::string_view text, std::size_t end)
+{
+    if (end >= text.size())
+        return text.size();
+    auto isNumberChar = [](char c) {
+        return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+    };
+    std::size_t start = end;
+    if (text[end] == '"') {
+        // Back to the opening quote: the first '"' not escaped by an odd
+        // number of backslashes.
+        while (start > 0) {
+            --start;
+            if (text[start] != '"')
+                continue;
+            std::size_t backslashes = 0;
+            while (backslashes < start && text[start - 1 - backslashes] == '\\')
+                ++backslashes;
+            if (backslashes % 2 == 0)
+                break;
+        }
+    } else if (text[end] >= 'a' && text[end] <= 'z') {
+        while (start > 0 && text[start - 1] >= 'a' && text[start - 1] <= 'z')
+            --start;
+    } else if (isNumberChar(text[end])) {
+        while (start > 0 && isNumberChar(text[start - 1]))
+            --start;
+    }
+    return start;
+}
+
 // Builds the document like nlohmann's own DOM parser, but keeps track of the
 // JSON pointer of the value being read (so a syntax error or an overflowing
 // number can say where it is) and reports duplicate keys.
@@ -167,6 +201,7 @@ public:
     {
         Level& level = m_stack.back();
         level.key = key;
+        level.memberOpen = true;
         if (level.value->contains(key))
             m_diagnostics.push_back(makeError("duplicate key \"" + printable(key) + "\"",
                                               pointerHere()));
@@ -189,9 +224,17 @@ public:
             message = colon == std::string::npos ? what : what.substr(colon + 2);
             message = printable(message);
         }
+        // `position` counts the characters read. A token the lexer could not
+        // finish ("last read: ...") is located at the character that broke it;
+        // a complete token in the wrong place (a number where a comma belongs,
+        // an overflowing number) at its first character.
+        std::size_t offset = position > 0 ? position - 1 : 0;
+        if (message.find("unexpected end of input") != std::string::npos)
+            offset = m_text.size();
+        else if (ex.id == 406 || message.find("; last read: '") == std::string::npos)
+            offset = tokenStart(m_text, offset);
         Diagnostic d = makeError(std::move(message), pointerHere());
-        // `position` counts the characters read, the offending one included.
-        setTextPosition(m_text, position > 0 ? position - 1 : 0, d);
+        setTextPosition(m_text, offset, d);
         m_diagnostics.push_back(std::move(d));
         return false;
     }
@@ -202,7 +245,8 @@ public:
 private:
     struct Level {
         json* value;
-        std::string key; // the member being read, for objects
+        std::string key;         // the member being read, for objects
+        bool memberOpen = false; // its key is read, its value not yet complete
     };
 
     json* place(json&& value)
@@ -219,9 +263,15 @@ private:
         *m_member = std::move(value);
         return m_member;
     }
+    void memberComplete()
+    {
+        if (!m_stack.empty() && m_stack.back().value->is_object())
+            m_stack.back().memberOpen = false;
+    }
     bool add(json&& value)
     {
         place(std::move(value));
+        memberComplete();
         return true;
     }
     bool open(json&& container)
@@ -232,12 +282,14 @@ private:
     bool close()
     {
         m_stack.pop_back();
+        memberComplete();
         return true;
     }
 
     // The pointer of the value being read: inner levels name the container
-    // being filled (the last element of an array), the innermost level the
-    // slot about to be filled.
+    // being filled (the last element of an array, the member being read); the
+    // innermost level names the next array slot, or the member whose key is
+    // read, or nothing when the object itself waits for a key or a comma.
     std::string pointerHere() const
     {
         std::string pointer;
@@ -248,7 +300,7 @@ private:
                 if (i + 1 < m_stack.size() && index > 0)
                     --index;
                 pointer = appendPointer(pointer, index);
-            } else if (!level.key.empty() || level.value->contains(level.key)) {
+            } else if (i + 1 < m_stack.size() || level.memberOpen) {
                 pointer = appendPointer(pointer, level.key);
             }
         }
@@ -325,16 +377,19 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
         return false;
     }
     const std::optional<std::int64_t> integer = detail::asInteger(*versionValue);
-    if (!integer && !versionValue->is_number_unsigned()) {
+    // An integer too large for int64 (or for a double to hold exactly) is
+    // still a version, and certainly a newer one.
+    const bool hugeInteger = !integer && versionValue->is_number() &&
+                             versionValue->get<double>() > kSceneFormatVersion &&
+                             std::trunc(versionValue->get<double>()) == versionValue->get<double>();
+    if (!integer && !hugeInteger) {
         diagnostics.push_back(makeError("expected an integer", "/version"));
         return false;
     }
-    // Beyond int64 (unsigned): certainly newer.
     const std::int64_t version = integer ? *integer : INT64_MAX;
     if (version > kSceneFormatVersion) {
         diagnostics.push_back(makeError(
-            "scene format version " +
-                (versionValue->is_number_unsigned() ? versionValue->dump() : std::to_string(version)) +
+            "scene format version " + (integer ? std::to_string(version) : versionValue->dump()) +
                 " is newer than this Regio supports (" + std::to_string(kSceneFormatVersion) +
                 "); update Regio",
             "/version"));

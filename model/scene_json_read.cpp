@@ -222,9 +222,9 @@ private:
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"id", "name", "reflectance", "emission"});
         readString(value, pointer, "id", Required::Yes, material.id);
         IdScope scope(*this, material.id);
+        checkKeys(value, pointer, {"id", "name", "reflectance", "emission"});
         readString(value, pointer, "name", Required::No, material.name);
         // A reflectance of 1 or more would create energy (paper §5.1: the
         // iteration converges only for rho < 1).
@@ -250,9 +250,9 @@ private:
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"id", "name", "parts"});
         readString(value, pointer, "id", Required::Yes, object.id);
         IdScope scope(*this, object.id);
+        checkKeys(value, pointer, {"id", "name", "parts"});
         readString(value, pointer, "name", Required::No, object.name);
         if (const json* parts = arrayMember(value, pointer, "parts", Required::Yes)) {
             for (std::size_t i = 0; i < parts->size(); ++i)
@@ -264,9 +264,9 @@ private:
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"id", "name", "material", "vertices", "faces"});
         readString(value, pointer, "id", Required::Yes, part.id);
         IdScope scope(*this, part.id);
+        checkKeys(value, pointer, {"id", "name", "material", "vertices", "faces"});
         readString(value, pointer, "name", Required::No, part.name);
         readString(value, pointer, "material", Required::No, part.material);
 
@@ -294,9 +294,9 @@ private:
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"id", "loop", "material"});
         readString(value, pointer, "id", Required::Yes, face.id);
         IdScope scope(*this, face.id);
+        checkKeys(value, pointer, {"id", "loop", "material"});
         readString(value, pointer, "material", Required::No, face.material);
         const json* loop = arrayMember(value, pointer, "loop", Required::Yes);
         if (!loop)
@@ -327,9 +327,9 @@ private:
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"id", "name", "min", "max", "bspOrder"});
         readString(value, pointer, "id", Required::Yes, region.id);
         IdScope scope(*this, region.id);
+        checkKeys(value, pointer, {"id", "name", "min", "max", "bspOrder"});
         readString(value, pointer, "name", Required::No, region.name);
         readVec3(value, pointer, "min", Required::Yes, region.min);
         readVec3(value, pointer, "max", Required::Yes, region.max);
