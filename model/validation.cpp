@@ -42,7 +42,7 @@ std::string formatLength(double metres)
     const double magnitude = std::abs(metres);
     if (magnitude >= 1.0 || magnitude == 0.0)
         return formatValue(metres) + " m";
-    if (magnitude >= 1e-3)
+    if (magnitude >= 1e-4)
         return formatValue(metres * 1e3) + " mm";
     return formatValue(metres * 1e6) + " \u00b5m";
 }

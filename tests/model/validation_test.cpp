@@ -2,12 +2,16 @@
 // least that triggers the rule, and expects exactly that rule's diagnostic.
 #include "model/validation.h"
 
+#include "model/scene_json.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -514,3 +518,81 @@ TEST(Validation, HundredThousandFacesValidateCleanly)
     RecordProperty("validate_seconds", std::to_string(seconds));
     EXPECT_EQ(diagnostics.size(), 0u) << dump(diagnostics).substr(0, 2000);
 }
+
+// --- the scene files of tests/data/invalid -----------------------------------------
+
+namespace {
+
+struct InvalidFile {
+    std::string name;
+    Severity severity = Severity::Error;
+    std::string pointer;
+    std::vector<std::string> idPath;
+    std::string message;
+};
+
+void PrintTo(const InvalidFile& file, std::ostream* out) { *out << file.name; }
+
+std::string invalidDataDir() { return std::string(REGIO_TEST_DATA) + "/invalid"; }
+
+// expected.tsv: file, severity, pointer ("-" = document), id path (each id in
+// double quotes, "-" = none), a part of the message.
+std::vector<InvalidFile> loadInvalidFileTable()
+{
+    std::vector<InvalidFile> table;
+    std::ifstream in(invalidDataDir() + "/expected.tsv");
+    for (std::string row; std::getline(in, row);) {
+        if (row.empty() || row[0] == '#')
+            continue;
+        std::vector<std::string> cells;
+        std::stringstream split(row);
+        for (std::string cell; std::getline(split, cell, '\t');)
+            cells.push_back(cell);
+        if (cells.size() != 5)
+            continue;
+        InvalidFile file{cells[0], cells[1] == "warning" ? Severity::Warning : Severity::Error,
+                         cells[2] == "-" ? "" : cells[2], {}, cells[4]};
+        if (cells[3] != "-") {
+            for (size_t open = cells[3].find('"'); open != std::string::npos;) {
+                size_t close = cells[3].find('"', open + 1);
+                file.idPath.push_back(cells[3].substr(open + 1, close - open - 1));
+                open = cells[3].find('"', close + 1);
+            }
+        }
+        table.push_back(std::move(file));
+    }
+    return table;
+}
+
+class InvalidSceneFile : public testing::TestWithParam<InvalidFile> {};
+
+} // namespace
+
+TEST(InvalidSceneFiles, EveryFileHasARowAndTheRulesAreCovered)
+{
+    const std::vector<InvalidFile> table = loadInvalidFileTable();
+    ASSERT_GE(table.size(), 10u);
+    for (const auto& entry : std::filesystem::directory_iterator(invalidDataDir())) {
+        const std::string name = entry.path().filename().string();
+        if (name == "expected.tsv")
+            continue;
+        bool listed = std::any_of(table.begin(), table.end(), [&](const InvalidFile& f) { return f.name == name; });
+        EXPECT_TRUE(listed) << name << " has no row in expected.tsv";
+    }
+}
+
+TEST_P(InvalidSceneFile, ReadsCleanlyAndBreaksExactlyItsRule)
+{
+    const InvalidFile& file = GetParam();
+    SceneReadResult read = loadSceneFile(invalidDataDir() + "/" + file.name);
+    ASSERT_TRUE(read.scene.has_value()) << dump(read.diagnostics);
+    EXPECT_TRUE(read.diagnostics.empty()) << dump(read.diagnostics);
+    expectOnly(validateScene(*read.scene), file.severity, file.pointer, file.idPath, file.message);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, InvalidSceneFile, testing::ValuesIn(loadInvalidFileTable()),
+                         [](const testing::TestParamInfo<InvalidFile>& info) {
+                             std::string name = info.param.name.substr(0, info.param.name.find('.'));
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
