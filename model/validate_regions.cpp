@@ -185,7 +185,7 @@ void checkPartsInRegions(ValidationContext& context, const std::vector<Box3>& bo
                     if (!usable[f])
                         continue;
                     positions = loopPositions(part.vertices, part.faces[f].loop);
-                    if (areaInsideBox(positions, boxes[r]) > kMinFaceArea) {
+                    if (areaInsideBox(positions, boxes[r]) >= kMinFaceArea) {
                         touched.push_back(scene.regions[r].id);
                         break;
                     }
@@ -246,7 +246,9 @@ void checkBspOrders(ValidationContext& context, const std::vector<Box3>& boxes)
                 continue;
             const Part& part = context.part(at.object, at.part);
             positions = loopPositions(part.vertices, part.faces[size_t(at.face)].loop);
-            if (areaInsideBox(positions, boxes[r]) <= kMinFaceArea)
+            if (polygonArea(positions) < kMinFaceArea)
+                continue; // reported as a zero-area face; it has no inside or outside
+            if (areaInsideBox(positions, boxes[r]) < kMinFaceArea)
                 context.error("the BSP order of region " + quoted(region.id) + " names face " + quoted(faceId) +
                                   ", which lies outside the region; a region's BSP order may only name "
                                   "faces inside its box",
