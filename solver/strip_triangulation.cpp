@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace regio::solver {
@@ -21,6 +22,11 @@ double minAngle2D(const Vec2& a, const Vec2& b, const Vec2& c)
     };
     return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
 }
+
+// How close (in strip heights) a cut may pass by a corner before it snaps to it.
+constexpr double kSnap = 0.5;
+// How far (in strip heights) one end of a cut may move onto a corner of its side.
+constexpr double kSideSnap = 0.25;
 
 double cross2(const Vec2& a, const Vec2& b, const Vec2& c)
 {
@@ -85,25 +91,48 @@ public:
                 break;
         }
 
-        // Strips of equal height, at most the patch size.
+        // As many strips as the patch size asks for.
         const int strips = std::max(1, int(std::ceil(height / m_patchSize - 1e-9)));
         std::vector<double> cutY(size_t(strips) + 1);
         std::vector<std::vector<int>> cuts(size_t(strips) + 1);
         for (int j = 0; j <= strips; ++j) {
-            cutY[size_t(j)] = j == strips ? ymax : ymin + height * double(j) / double(strips);
-            int l = j == 0 ? bottomLeft : j == strips ? topLeft : crossing(left, cutY[size_t(j)]);
-            int r = j == 0 ? bottomRight : j == strips ? topRight : crossing(right, cutY[size_t(j)]);
+            if (j == 0 || j == strips) {
+                cutY[size_t(j)] = j == 0 ? ymin : ymax;
+            } else {
+                // Equal strips over what is left; but a cut passing just beside
+                // a corner would leave a tiny piece of side, and every triangle
+                // on it would be a sliver, so the cut moves onto the nearest
+                // corner within half a strip. Strips stay between half and one
+                // and a half of the nominal height.
+                const double previous = cutY[size_t(j - 1)];
+                const double step = (ymax - previous) / double(strips - j + 1);
+                double cut = previous + step;
+                double nearest = kSnap * step;
+                for (int i = 0; i < n; ++i) {
+                    const double y = pts[size_t(i)].y;
+                    if (y > previous + m_eps && y < ymax - m_eps && std::abs(y - (previous + step)) < nearest) {
+                        nearest = std::abs(y - (previous + step));
+                        cut = y;
+                    }
+                }
+                cutY[size_t(j)] = cut;
+            }
+            // Each end of the cut may still move onto a corner of its own side
+            // (by a quarter strip): the cut then tilts a little, which keeps
+            // the strips convex and spares a sliver on the other side.
+            const double sideSnap = j > 0 && j < strips ? kSideSnap * (ymax - ymin) / double(strips) : 0.0;
+            int l = j == 0 ? bottomLeft : j == strips ? topLeft : crossing(left, cutY[size_t(j)], sideSnap);
+            int r = j == 0 ? bottomRight : j == strips ? topRight : crossing(right, cutY[size_t(j)], sideSnap);
             cuts[size_t(j)] = divide(l, r, true);
         }
 
         for (int j = 0; j < strips; ++j) {
-            const double y0 = cutY[size_t(j)], y1 = cutY[size_t(j + 1)];
             const std::vector<int>& bottom = cuts[size_t(j)];
             const std::vector<int>& top = cuts[size_t(j + 1)];
             std::vector<int> loop(bottom.begin(), bottom.end());
-            appendSide(right, bottom.back(), top.back(), y0, y1, false, loop);
+            appendSide(right, bottom.back(), top.back(), false, loop);
             loop.insert(loop.end(), top.rbegin(), top.rend());
-            appendSide(left, top.front(), bottom.front(), y0, y1, true, loop);
+            appendSide(left, top.front(), bottom.front(), true, loop);
             // A single-point bottom or top appears at both ends of a side.
             std::vector<int> strip;
             for (int index : loop)
@@ -118,13 +147,19 @@ public:
     }
 
 private:
-    // Where the upward chain crosses height y: an existing corner within eps,
-    // else a new point on the chain edge that spans y.
-    int crossing(const std::vector<int>& chain, double y)
+    // Where the upward chain crosses height y: its corner nearest to y when
+    // within `snap` (or eps), else a new point on the chain edge that spans y.
+    int crossing(const std::vector<int>& chain, double y, double snap)
     {
-        for (int index : chain)
-            if (std::abs(m_mesh.points[size_t(index)].y - y) <= m_eps)
-                return index;
+        int nearest = -1;
+        for (int index : chain) {
+            const double distance = std::abs(m_mesh.points[size_t(index)].y - y);
+            if (distance <= std::max(snap, m_eps) &&
+                (nearest < 0 || distance < std::abs(m_mesh.points[size_t(nearest)].y - y)))
+                nearest = index;
+        }
+        if (nearest >= 0)
+            return nearest;
         for (size_t i = 0; i + 1 < chain.size(); ++i) {
             const Vec2 a = m_mesh.points[size_t(chain[i])];
             const Vec2 b = m_mesh.points[size_t(chain[i + 1])];
@@ -166,15 +201,16 @@ private:
     }
 
     // Appends the side of a strip strictly between its cut points `from` and
-    // `to`: the chain's corners inside (y0, y1) and the division points of the
+    // `to`: the chain's corners between them and the division points of the
     // side's pieces. `downwards` walks the (upward) chain backwards.
-    void appendSide(const std::vector<int>& chain, int from, int to, double y0, double y1, bool downwards,
-                    std::vector<int>& loop)
+    void appendSide(const std::vector<int>& chain, int from, int to, bool downwards, std::vector<int>& loop)
     {
+        const double y0 = std::min(m_mesh.points[size_t(from)].y, m_mesh.points[size_t(to)].y);
+        const double y1 = std::max(m_mesh.points[size_t(from)].y, m_mesh.points[size_t(to)].y);
         std::vector<int> inside;
         for (int index : chain) {
             double y = m_mesh.points[size_t(index)].y;
-            if (y > y0 + m_eps && y < y1 - m_eps)
+            if (index != from && index != to && y > y0 + m_eps && y < y1 - m_eps)
                 inside.push_back(index);
         }
         if (downwards)
@@ -190,11 +226,9 @@ private:
         loop.insert(loop.end(), between.begin(), between.end());
     }
 
-    // Lengthwise zig-zag between the lower and upper chains of a convex strip
-    // (from its leftmost to its rightmost corner), closing both ends with a
-    // triangle. Each step cuts off the better of the two possible triangles; a
-    // chain may reach the far end only together with the other, so no run of
-    // collinear points is ever left for a degenerate fan.
+    // Lengthwise zig-zag ("L direction") between the lower and upper chains of
+    // a convex strip, from its leftmost to its rightmost corner; the first and
+    // last triangles close the two ends.
     void triangulateStrip(const std::vector<int>& strip)
     {
         const auto& pts = m_mesh.points;
@@ -229,27 +263,58 @@ private:
         }
         const int A = int(lo.size()) - 1, B = int(up.size()) - 1;
         emit(lo[0], lo[1], up[1]);
-        int a = 1, b = 1;
-        while (!((a == A && b == B - 1) || (a == A - 1 && b == B))) {
-            const bool canLo = a < A && (a + 1 < A || b == B - 1);
-            const bool canUp = b < B && (b + 1 < B || a == A - 1);
-            const int L = lo[size_t(a)], U = up[size_t(b)];
-            double qLo = -1.0, qUp = -1.0;
-            if (canLo)
-                qLo = quality(L, lo[size_t(a + 1)], U);
-            if (canUp)
-                qUp = quality(L, up[size_t(b + 1)], U);
-            bool advanceLo = canLo;
-            if (canLo && canUp)
-                advanceLo = qLo > qUp || (qLo == qUp && pts[size_t(lo[size_t(a + 1)])].x <= pts[size_t(up[size_t(b + 1)])].x);
-            if (advanceLo) {
-                emit(L, lo[size_t(a + 1)], U);
-                ++a;
+        // Dynamic programming over the rungs (a, b) = (lo[a], up[b]): the
+        // zig-zag whose worst triangle is best (ties: the larger sum of the
+        // triangles' smallest angles). A chain may step onto the far end e only
+        // when the other is one step before it, so both finish together.
+        const int width = B + 1;
+        struct Cell {
+            double worst = -1.0; // -1 = unreachable
+            double sum = 0.0;
+            bool fromLo = false;
+        };
+        std::vector<Cell> table(size_t((A + 1) * width));
+        auto cell = [&](int a, int b) -> Cell& { return table[size_t(a * width + b)]; };
+        cell(1, 1) = Cell{std::numeric_limits<double>::infinity(), 0.0, false};
+        auto done = [&](int a, int b) { return (a == A && b == B - 1) || (a == A - 1 && b == B); };
+        auto offer = [&](int a, int b, double worst, double sum, bool fromLo) {
+            Cell& c = cell(a, b);
+            if (worst > c.worst + 1e-12 || (std::abs(worst - c.worst) <= 1e-12 && sum > c.sum))
+                c = Cell{worst, sum, fromLo};
+        };
+        for (int diagonal = 2; diagonal <= A + B; ++diagonal)
+            for (int a = std::max(1, diagonal - B); a <= std::min(A, diagonal - 1); ++a) {
+                const int b = diagonal - a;
+                const Cell here = cell(a, b);
+                if (here.worst < 0.0 || done(a, b))
+                    continue;
+                if (a < A && (a + 1 < A || b == B - 1)) {
+                    double q = quality(lo[size_t(a)], lo[size_t(a + 1)], up[size_t(b)]);
+                    offer(a + 1, b, std::min(here.worst, q), here.sum + q, true);
+                }
+                if (b < B && (b + 1 < B || a == A - 1)) {
+                    double q = quality(lo[size_t(a)], up[size_t(b + 1)], up[size_t(b)]);
+                    offer(a, b + 1, std::min(here.worst, q), here.sum + q, false);
+                }
+            }
+        int a = A, b = B - 1;
+        if (A >= 1 && B >= 1 && cell(A - 1, B).worst > cell(A, B - 1).worst) {
+            a = A - 1;
+            b = B;
+        }
+        // Walk back from the final rung, then emit in order.
+        std::vector<Triangle> path;
+        while (!(a == 1 && b == 1)) {
+            if (cell(a, b).fromLo) {
+                path.push_back({lo[size_t(a - 1)], lo[size_t(a)], up[size_t(b)]});
+                --a;
             } else {
-                emit(L, up[size_t(b + 1)], U);
-                ++b;
+                path.push_back({lo[size_t(a)], up[size_t(b)], up[size_t(b - 1)]});
+                --b;
             }
         }
+        for (auto it = path.rbegin(); it != path.rend(); ++it)
+            emit((*it)[0], (*it)[1], (*it)[2]);
     }
 
     double quality(int a, int b, int c) const

@@ -2,20 +2,23 @@
 // Face splitting into triangle patches by the strip method of the paper
 // (§5.4, after Baum et al. 1991): the convex polygon is moved into its plane's
 // 2D frame (rotation + translation; the longest edge becomes the bottom, along
-// +x), cut into horizontal strips of equal height no larger than the patch
-// size, and each strip is triangulated lengthwise ("in L direction"): a zig-zag
-// between its bottom and top edges, both divided into pieces no longer than
-// the patch size, closed by a triangle at each end. Every cut line is divided
-// once and shared by the strips above and below it, so the patches of one
-// polygon meet vertex to vertex (no T-vertices inside a fragment).
+// +x), cut into horizontal strips about the patch size high, and each strip is
+// triangulated lengthwise ("in L direction"): a zig-zag between its bottom and
+// top edges, both divided into pieces no longer than the patch size, closed by
+// a triangle at each end. Every cut line is divided once and shared by the
+// strips above and below it, so the patches of one polygon meet vertex to
+// vertex (no T-vertices inside a fragment).
 //
-// Quality: at each zig-zag step the triangle with the larger smallest angle is
-// taken. For polygons whose extent in both directions is at least the patch
-// size and whose corners are not sharper than 60 degrees (squares, regular
-// polygons, equilateral and right isosceles triangles) no patch angle falls
-// below kStripMinAngleDegrees. A polygon thinner than the patch size gives
-// patches of aspect about patchSize : thickness - the polygon allows no better
-// without using far more patches - and a sharp corner keeps its angle.
+// Quality: a cut that would pass just beside a corner moves onto it (strips
+// then range from half to one and a half patch sizes), and the zig-zag of each
+// strip is the one whose worst triangle is best (dynamic programming over the
+// rungs). Measured guarantee: regular polygons and triangles with corners of at
+// least 60 degrees and edges of at least half the patch size get no patch
+// angle below kStripMinAngleDegrees; squares of at least the patch size no
+// angle below atan(1/2) = 26.6 degrees. A polygon thinner than the patch size
+// gives patches of aspect about patchSize : thickness (it allows no better
+// without many more patches), a sharp corner keeps its angle, and a corner of
+// nearly 180 degrees between short edges can force thin ears.
 #include "model/types.h"
 
 #include <glm/vec2.hpp>
@@ -26,7 +29,7 @@
 
 namespace regio::solver {
 
-inline constexpr double kStripMinAngleDegrees = 25.0;
+inline constexpr double kStripMinAngleDegrees = 15.0;
 
 using Vec2 = glm::dvec2;
 using Triangle = std::array<int, 3>;
