@@ -111,7 +111,7 @@ def cornell_box():
         {"id": "red", "reflectance": [0.63, 0.065, 0.05], "emission": [0, 0, 0]},
         {"id": "green", "reflectance": [0.14, 0.45, 0.091], "emission": [0, 0, 0]},
         # Exitance = pi x the published radiance 17 12 4.
-        {"id": "light", "reflectance": [0.78, 0.78, 0.78],
+        {"id": "emitter", "name": "Light", "reflectance": [0.78, 0.78, 0.78],
          "emission": [round(math.pi * v, 6) for v in (17, 12, 4)]},
     ]
     parts = []
@@ -175,7 +175,7 @@ def cornell_box():
         [[265, 0, 296], [265, 330, 296], [423, 330, 247], [423, 0, 247]],
     ], 330)
 
-    light = PartBuilder("light.panel", "light", "Light")
+    light = PartBuilder("light.panel", "emitter", "Light")
     light.face("emitter", [mm(p) for p in [[343, 548.8, 227], [343, 548.8, 332], [213, 548.8, 332], [213, 548.8, 227]]], towards=centre)
 
     objects = [
@@ -219,17 +219,22 @@ def two_lights_room():
     orders = {n: [] for n in names}
     for k, n in enumerate(names):
         x0, x1 = cuts[k], cuts[k + 1]
-        p = PartBuilder(f"room.{n}", "wall", f"Room, {n} part")
-        fl = p.face("floor", [[x0, 0, 0], [x1, 0, 0], [x1, 0, D], [x0, 0, D]], towards=centre, material="floor")
-        ce = p.face("ceiling", [[x0, H, 0], [x1, H, 0], [x1, H, D], [x0, H, D]], towards=centre)
-        bk = p.face("back", [[x0, 0, D], [x1, 0, D], [x1, H, D], [x0, H, D]], towards=centre)
-        fr = p.face("front", [[x0, 0, 0], [x1, 0, 0], [x1, H, 0], [x0, H, 0]], towards=centre)
-        orders[n] += [fl, ce, bk, fr]
+        # One flat panel per surface: a room is an open shell, and flat panels
+        # are walls by nature (validation does not call them open solids).
+        surfaces = [
+            ("floor", [[x0, 0, 0], [x1, 0, 0], [x1, 0, D], [x0, 0, D]], "floor"),
+            ("ceiling", [[x0, H, 0], [x1, H, 0], [x1, H, D], [x0, H, D]], None),
+            ("back", [[x0, 0, D], [x1, 0, D], [x1, H, D], [x0, H, D]], None),
+            ("front", [[x0, 0, 0], [x1, 0, 0], [x1, H, 0], [x0, H, 0]], None),
+        ]
         if k == 0:
-            orders[n].append(p.face("west", [[0, 0, 0], [0, 0, D], [0, H, D], [0, H, 0]], towards=centre))
+            surfaces.append(("west", [[0, 0, 0], [0, 0, D], [0, H, D], [0, H, 0]], None))
         if k == 2:
-            orders[n].append(p.face("east", [[W, 0, 0], [W, 0, D], [W, H, D], [W, H, 0]], towards=centre))
-        room_parts.append(p)
+            surfaces.append(("east", [[W, 0, 0], [W, 0, D], [W, H, D], [W, H, 0]], None))
+        for surface, quad, material in surfaces:
+            p = PartBuilder(f"room.{n}.{surface}", material or "wall", f"{surface.capitalize()}, {n}")
+            orders[n].append(p.face("inside", quad, towards=centre))
+            room_parts.append(p)
         pad = 0.05
         regions.append({"id": n, "name": n.capitalize(),
                         "min": [x0 - (pad if k == 0 else 0), -pad, -pad],
