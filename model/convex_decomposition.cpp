@@ -310,6 +310,8 @@ Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dve
                                                       const std::vector<Polygon2Loop>& holes,
                                                       double eps)
 {
+    if (signedArea2(points, outer) <= eps * eps)
+        return makeError("the cut outline is degenerate (it has no area) or runs clockwise");
     std::vector<std::vector<Kept>> rings;
     rings.push_back(dropCollinear(points, outer, eps));
     for (const Polygon2Loop& hole : holes)
