@@ -1,0 +1,594 @@
+#include "editor/viewport/viewport.h"
+
+#include "editor/qt_conversions.h"
+#include "editor/scene_document.h"
+#include "editor/viewport/picking.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QNativeGestureEvent>
+#include <QGuiApplication>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QWheelEvent>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace regio::editor {
+
+namespace {
+
+constexpr int kClickSlopPixels = 4;
+constexpr double kOrbitDegreesPerPixel = 0.4;
+
+bool isFlyKey(int key)
+{
+    return key == Qt::Key_W || key == Qt::Key_A || key == Qt::Key_S || key == Qt::Key_D ||
+           key == Qt::Key_Q || key == Qt::Key_E;
+}
+
+} // namespace
+
+QSurfaceFormat Viewport::requestedFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(4);
+    return format;
+}
+
+Viewport::Viewport(SceneDocument* document, QWidget* parent)
+    : QOpenGLWidget(parent), m_document(document)
+{
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setMinimumSize(200, 150);
+    setAttribute(Qt::WA_AcceptTouchEvents, false);
+    grabGesture(Qt::PinchGesture);
+
+    connect(document, &SceneDocument::objectsChanged, this, &Viewport::onObjectsChanged);
+    connect(document, &SceneDocument::materialsChanged, this, &Viewport::onMaterialsChanged);
+    connect(document, &SceneDocument::regionsChanged, this, &Viewport::onRegionsChanged);
+    connect(document, &SceneDocument::selectionChanged, this, &Viewport::onSelectionChanged);
+
+    m_flyTimer.setInterval(16);
+    connect(&m_flyTimer, &QTimer::timeout, this, &Viewport::flyStep);
+}
+
+Viewport::~Viewport()
+{
+    if (m_glReady) {
+        makeCurrent();
+        m_renderer.release();
+        doneCurrent();
+    }
+}
+
+ScreenView Viewport::screenView() const
+{
+    return ScreenView{m_camera, double(std::max(width(), 1)), double(std::max(height(), 1))};
+}
+
+void Viewport::setShading(ShadingMode mode)
+{
+    m_params.shading = mode;
+    update();
+}
+
+void Viewport::setCullBackFaces(bool on)
+{
+    m_params.cullBackFaces = on;
+    update();
+}
+
+void Viewport::setShowGrid(bool on)
+{
+    m_params.showGrid = on;
+    update();
+}
+
+void Viewport::setShowRegions(bool on)
+{
+    m_params.showRegions = on;
+    update();
+}
+
+void Viewport::setPickMode(PickMode mode) { m_pickMode = mode; }
+
+void Viewport::setGizmoMode(GizmoMode mode)
+{
+    m_gizmo.setMode(mode);
+    m_toolDirty = true;
+    update();
+}
+
+void Viewport::setSnapEnabled(bool on) { m_snap.enabled = on; }
+
+void Viewport::setGridStep(double metres)
+{
+    if (!(metres > 0.0))
+        return;
+    m_snap.step = metres;
+    m_gridDirty = true;
+    update();
+}
+
+double Viewport::sceneRadius() const
+{
+    const model::Box3& b = m_mesh.bounds();
+    return b.empty ? 5.0 : std::max(0.5 * glm::length(b.size()), 0.1);
+}
+
+void Viewport::frameSelection()
+{
+    const std::vector<std::string> faces = selectedFaceIds(m_document->scene(), m_document->selection());
+    model::Box3 box;
+    if (m_document->selection().kind == SelectionKind::Region) {
+        for (const std::string& id : m_document->selection().ids)
+            if (const model::Region* r = m_document->scene().findRegion(id)) {
+                box.extend(r->min);
+                box.extend(r->max);
+            }
+    } else if (!faces.empty()) {
+        box = boundsOfFaces(m_document->scene(), faces);
+    }
+    if (box.empty) {
+        frameAll();
+        return;
+    }
+    m_camera.frame(box, screenView().aspect());
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+}
+
+void Viewport::frameAll()
+{
+    model::Box3 box = boundsOfFaces(m_document->scene(), {});
+    if (box.empty) {
+        box.extend(model::Vec3(-1.0, 0.0, -1.0));
+        box.extend(model::Vec3(1.0, 1.0, 1.0));
+    }
+    m_camera.setSceneRadius(std::max(0.5 * glm::length(box.size()), 0.1));
+    m_camera.frame(box, screenView().aspect());
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+}
+
+void Viewport::setStandardView(StandardView view)
+{
+    m_camera.setStandardView(view);
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+}
+
+void Viewport::setOrthographic(bool on)
+{
+    m_camera.setOrthographic(on);
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+}
+
+void Viewport::resetView()
+{
+    const model::Box3 box = boundsOfFaces(m_document->scene(), {});
+    m_camera.setSceneRadius(box.empty ? 5.0 : std::max(0.5 * glm::length(box.size()), 0.1));
+    if (m_document->scene().camera) {
+        m_camera.setFromSceneCamera(*m_document->scene().camera);
+        m_toolDirty = true;
+        emit viewChanged();
+        update();
+        return;
+    }
+    m_camera.setStandardView(StandardView::Iso);
+    frameAll();
+}
+
+void Viewport::startClipByPoints()
+{
+    m_clip.start();
+    m_toolDirty = true;
+    emit statusMessage(tr("Clip: click three points on surfaces to define the cutting plane (Esc cancels)"));
+    update();
+}
+
+void Viewport::cancelTool()
+{
+    m_clip.cancel();
+    if (m_gizmo.dragging()) {
+        m_gizmo.endDrag();
+        m_drag = Drag::None;
+        emit transformDragFinished();
+    }
+    m_toolDirty = true;
+    update();
+}
+
+// --- document signals: mark what must be uploaded ---------------------------
+
+void Viewport::onObjectsChanged()
+{
+    m_geometryDirty = true;
+    m_selectionDirty = true; // face triangles moved
+    m_gridDirty = true;      // the grid follows the scene's size
+    m_toolDirty = true;      // the gizmo follows the selection's centre
+    update();
+}
+
+void Viewport::onMaterialsChanged()
+{
+    m_coloursDirty = true;
+    update();
+}
+
+void Viewport::onRegionsChanged()
+{
+    m_regionsDirty = true;
+    update();
+}
+
+void Viewport::onSelectionChanged()
+{
+    m_selectionDirty = true;
+    m_regionsDirty = true; // selected regions are drawn brighter
+    m_toolDirty = true;
+    update();
+}
+
+// --- GL -----------------------------------------------------------------------
+
+void Viewport::initializeGL()
+{
+    const QSurfaceFormat format = context()->format();
+    const bool versionOk = format.majorVersion() > 3 || (format.majorVersion() == 3 && format.minorVersion() >= 3);
+    QString error;
+    if (!versionOk) {
+        m_renderingError = tr("OpenGL 3.3 is needed, this system offers %1.%2")
+                               .arg(format.majorVersion())
+                               .arg(format.minorVersion());
+    } else if (!m_renderer.initialize(&error)) {
+        m_renderingError = tr("The viewport shaders do not compile: %1").arg(error);
+    } else {
+        m_glReady = true;
+    }
+    if (!m_glReady)
+        emit renderingFailed(m_renderingError);
+    m_geometryDirty = m_coloursDirty = m_selectionDirty = m_regionsDirty = m_gridDirty = m_toolDirty = true;
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
+        makeCurrent();
+        m_renderer.release();
+        m_glReady = false;
+        doneCurrent();
+    });
+}
+
+void Viewport::resizeGL(int, int) { m_toolDirty = true; }
+
+void Viewport::makeCurrentAndUpload()
+{
+    const model::Scene& scene = m_document->scene();
+    if (m_geometryDirty) {
+        m_mesh.rebuildGeometry(scene);
+        m_renderer.uploadScene(m_mesh);
+        m_camera.setSceneRadius(sceneRadius());
+        m_geometryDirty = m_coloursDirty = false;
+    }
+    if (m_coloursDirty) {
+        m_mesh.rebuildColours(scene);
+        m_renderer.uploadColours(m_mesh);
+        m_coloursDirty = false;
+    }
+    if (m_selectionDirty) {
+        m_renderer.uploadSelection(m_mesh, selectedFaceIds(scene, m_document->selection()));
+        m_selectionDirty = false;
+    }
+    if (m_regionsDirty) {
+        const Selection& s = m_document->selection();
+        m_renderer.uploadRegions(buildRegionBoxes(
+            scene, s.kind == SelectionKind::Region ? s.ids : std::vector<std::string>{}));
+        m_regionsDirty = false;
+    }
+    if (m_gridDirty) {
+        m_renderer.uploadGrid(buildGrid(m_snap.step, std::max(10.0, sceneRadius() * 2.0)));
+        m_gridDirty = false;
+    }
+    if (m_toolDirty) {
+        updateToolOverlay();
+        m_toolDirty = false;
+    }
+}
+
+void Viewport::paintGL()
+{
+    if (!m_glReady) {
+        auto* gl = context()->functions();
+        gl->glClearColor(0.3f, 0.1f, 0.1f, 1.0f);
+        gl->glClear(GL_COLOR_BUFFER_BIT);
+        return;
+    }
+    makeCurrentAndUpload();
+    const double aspect = screenView().aspect();
+    m_params.viewProjection = glm::mat4(m_camera.projectionMatrix(aspect) * m_camera.viewMatrix());
+    m_params.eye = glm::vec3(m_camera.eye());
+    m_params.viewDirection = glm::vec3(m_camera.forward());
+    m_params.orthographic = m_camera.orthographic();
+    m_renderer.render(m_params);
+    if (m_framesRendered++ == 0)
+        QTimer::singleShot(0, this, &Viewport::frameRendered);
+}
+
+bool Viewport::gizmoVisible() const
+{
+    const Selection& s = m_document->selection();
+    return !m_clip.active() && (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part) &&
+           !s.empty();
+}
+
+void Viewport::updateGizmo()
+{
+    if (m_gizmo.dragging())
+        return; // the pivot stays put during a drag
+    const std::vector<std::string> faces = selectedFaceIds(m_document->scene(), m_document->selection());
+    const model::Box3 box = boundsOfFaces(m_document->scene(), faces);
+    if (!box.empty)
+        m_gizmo.setPivot(box.center());
+}
+
+void Viewport::updateToolOverlay()
+{
+    LineList lines;
+    if (gizmoVisible()) {
+        updateGizmo();
+        lines = m_gizmo.lines(screenView(), m_hoverHandle);
+    }
+    if (m_clip.active()) {
+        const ScreenView view = screenView();
+        const double marker = 6.0 * view.worldPerPixelAt(m_camera.target());
+        lines.append(m_clip.lines(marker));
+    }
+    m_renderer.uploadToolLines(lines);
+}
+
+// --- input ----------------------------------------------------------------------
+
+void Viewport::selectAt(const QPoint& pos, bool toggle)
+{
+    const ScreenView view = screenView();
+    const Ray ray = view.ray(pos.x(), pos.y());
+    const bool ignoreBack = m_params.cullBackFaces && m_params.shading != ShadingMode::Wireframe;
+    const auto hit = pickFace(m_document->scene(), ray, ignoreBack);
+    if (!hit) {
+        if (!toggle)
+            m_document->clearSelection();
+        return;
+    }
+    SelectionKind kind = SelectionKind::Object;
+    std::string id = hit->objectId;
+    if (m_pickMode == PickMode::Part) {
+        kind = SelectionKind::Part;
+        id = hit->partId;
+    } else if (m_pickMode == PickMode::Face) {
+        kind = SelectionKind::Face;
+        id = hit->faceId;
+    }
+    const Selection& current = m_document->selection();
+    m_document->setSelection(toggle ? current.toggled(kind, id) : Selection::single(kind, id));
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event)
+{
+    setFocus(Qt::MouseFocusReason);
+    m_pressPos = m_lastPos = event->position().toPoint();
+    const Qt::KeyboardModifiers mods = event->modifiers();
+    const Qt::MouseButton button = event->button();
+    if (button == Qt::LeftButton && (mods & Qt::AltModifier)) {
+        m_drag = (mods & Qt::ShiftModifier) ? Drag::Pan : (mods & Qt::ControlModifier) ? Drag::Zoom : Drag::Orbit;
+    } else if (button == Qt::MiddleButton) {
+        m_drag = (mods & Qt::ShiftModifier) ? Drag::Pan : (mods & Qt::ControlModifier) ? Drag::Zoom : Drag::Orbit;
+    } else if (button == Qt::RightButton) {
+        m_drag = Drag::Look;
+        m_flyClock.start();
+        m_flyTimer.start();
+        setCursor(Qt::CrossCursor);
+    } else if (button == Qt::LeftButton) {
+        const ScreenView view = screenView();
+        if (m_clip.active()) {
+            const Ray ray = view.ray(m_pressPos.x(), m_pressPos.y());
+            const auto hit = pickFace(m_document->scene(), ray, false);
+            std::optional<model::Vec3> point;
+            if (hit)
+                point = hit->point;
+            else
+                point = intersectGround(ray);
+            if (point) {
+                if (auto plane = m_clip.addPoint(*point))
+                    emit clipPlaneChosen(*plane);
+                m_toolDirty = true;
+                update();
+            }
+            m_drag = Drag::None;
+            return;
+        }
+        const GizmoHandle handle = gizmoVisible() ? m_gizmo.hitTest(view, m_pressPos.x(), m_pressPos.y())
+                                                  : GizmoHandle::None;
+        if (handle != GizmoHandle::None) {
+            m_drag = Drag::Gizmo;
+            m_dragParts = selectedPartIds(m_document->scene(), m_document->selection());
+            ++m_dragSerial;
+            m_gizmo.beginDrag(handle, view, m_pressPos.x(), m_pressPos.y());
+        } else {
+            m_drag = Drag::Click;
+        }
+    }
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint pos = event->position().toPoint();
+    const QPoint delta = pos - m_lastPos;
+    m_lastPos = pos;
+    const ScreenView view = screenView();
+    switch (m_drag) {
+    case Drag::Orbit:
+        m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        break;
+    case Drag::Pan:
+        m_camera.pan(2.0 * delta.x() / view.height, -2.0 * delta.y() / view.height);
+        break;
+    case Drag::Zoom:
+        m_camera.zoom(std::pow(1.01, delta.y()));
+        break;
+    case Drag::Look:
+        m_camera.look(-delta.x() * kOrbitDegreesPerPixel * 0.5, -delta.y() * kOrbitDegreesPerPixel * 0.5);
+        break;
+    case Drag::Gizmo: {
+        const glm::dmat4 transform = m_gizmo.dragTo(view, pos.x(), pos.y(), m_snap);
+        emit transformDragged(m_dragParts, transform, m_dragSerial);
+        emit statusMessage(m_gizmo.dragDescription());
+        break;
+    }
+    case Drag::Click:
+        break;
+    case Drag::None: {
+        // Hover feedback: the gizmo handle, else the face under the cursor.
+        const GizmoHandle handle = gizmoVisible() ? m_gizmo.hitTest(view, pos.x(), pos.y()) : GizmoHandle::None;
+        if (handle != m_hoverHandle) {
+            m_hoverHandle = handle;
+            m_toolDirty = true;
+            update();
+        }
+        return;
+    }
+    }
+    if (m_drag != Drag::Click) {
+        m_toolDirty = true;
+        emit viewChanged();
+        update();
+    }
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event)
+{
+    const QPoint pos = event->position().toPoint();
+    if (m_drag == Drag::Click && event->button() == Qt::LeftButton &&
+        (pos - m_pressPos).manhattanLength() <= kClickSlopPixels) {
+        selectAt(pos, event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
+        const Ray ray = screenView().ray(pos.x(), pos.y());
+        if (const auto hit = pickFace(m_document->scene(), ray, m_params.cullBackFaces))
+            emit statusMessage(tr("%1 › %2 › %3").arg(toQString(hit->objectId), toQString(hit->partId),
+                                                      toQString(hit->faceId)));
+    }
+    if (m_drag == Drag::Gizmo) {
+        m_gizmo.endDrag();
+        emit transformDragFinished();
+    }
+    if (m_drag == Drag::Look) {
+        m_flyTimer.stop();
+        m_flyKeys.clear();
+        unsetCursor();
+    }
+    m_drag = Drag::None;
+    m_toolDirty = true;
+    update();
+}
+
+void Viewport::wheelEvent(QWheelEvent* event)
+{
+    const QPoint pixels = event->pixelDelta();
+    const QPoint angle = event->angleDelta();
+    if (!pixels.isNull() && !(event->modifiers() & Qt::ControlModifier)) {
+        // Trackpad two-finger scroll: orbit, or pan with Shift.
+        const ScreenView view = screenView();
+        if (event->modifiers() & Qt::ShiftModifier)
+            m_camera.pan(2.0 * pixels.x() / view.height, -2.0 * pixels.y() / view.height);
+        else
+            m_camera.orbit(pixels.x() * kOrbitDegreesPerPixel, pixels.y() * kOrbitDegreesPerPixel);
+    } else {
+        const double steps = (angle.y() != 0 ? angle.y() : pixels.y()) / 120.0;
+        m_camera.zoom(std::pow(0.85, steps));
+    }
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+    event->accept();
+}
+
+bool Viewport::event(QEvent* event)
+{
+    if (event->type() == QEvent::NativeGesture) {
+        auto* gesture = static_cast<QNativeGestureEvent*>(event);
+        if (gesture->gestureType() == Qt::ZoomNativeGesture) {
+            m_camera.zoom(1.0 / (1.0 + gesture->value()));
+            m_toolDirty = true;
+            emit viewChanged();
+            update();
+            return true;
+        }
+    }
+    return QOpenGLWidget::event(event);
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Escape && (m_clip.active() || m_gizmo.dragging())) {
+        cancelTool();
+        emit statusMessage(tr("Cancelled"));
+        return;
+    }
+    if (m_drag == Drag::Look && isFlyKey(event->key())) {
+        if (!event->isAutoRepeat())
+            m_flyKeys.insert(event->key());
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+void Viewport::keyReleaseEvent(QKeyEvent* event)
+{
+    if (isFlyKey(event->key()) && !event->isAutoRepeat()) {
+        m_flyKeys.remove(event->key());
+        return;
+    }
+    QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void Viewport::focusOutEvent(QFocusEvent* event)
+{
+    m_flyKeys.clear();
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+void Viewport::flyStep()
+{
+    const double seconds = std::min(m_flyClock.restart() / 1000.0, 0.1);
+    if (m_flyKeys.isEmpty())
+        return;
+    // Cross a room-sized scene in about two seconds; Shift is four times faster.
+    double speed = std::max(sceneRadius(), 0.5) * seconds;
+    if (QGuiApplication::keyboardModifiers() & Qt::ShiftModifier)
+        speed *= 4.0;
+    model::Vec3 move(0.0);
+    if (m_flyKeys.contains(Qt::Key_W)) move.z += 1;
+    if (m_flyKeys.contains(Qt::Key_S)) move.z -= 1;
+    if (m_flyKeys.contains(Qt::Key_D)) move.x += 1;
+    if (m_flyKeys.contains(Qt::Key_A)) move.x -= 1;
+    if (m_flyKeys.contains(Qt::Key_E)) move.y += 1;
+    if (m_flyKeys.contains(Qt::Key_Q)) move.y -= 1;
+    m_camera.fly(move * speed);
+    m_toolDirty = true;
+    emit viewChanged();
+    update();
+}
+
+} // namespace regio::editor
