@@ -5,6 +5,7 @@
 
 #include "model/scene_json_detail.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -23,7 +24,9 @@ void setTextPosition(std::string_view text, std::size_t offset, Diagnostic& diag
     offset = std::min(offset, text.size());
     int line = 1;
     int column = 1;
-    for (std::size_t i = 0; i < offset; ++i) {
+    // A UTF-8 byte order mark is no character an editor shows.
+    const std::size_t first = text.substr(0, 3) == "\xEF\xBB\xBF" && offset >= 3 ? 3 : 0;
+    for (std::size_t i = first; i < offset; ++i) {
         const auto byte = static_cast<unsigned char>(text[i]);
         if (byte == '\n') {
             ++line;
@@ -95,50 +98,56 @@ std::string printable(std::string_view text, std::size_t maxBytes = 160)
 }
 
 // Refuses what would make the real parser slow or its recursive tree
-// operations unsafe, before it runs: nesting deeper than kMaxNestingDepth and
-// absurdly long numbers. Strings are skipped; everything else is left for the
-// parser to judge.
+// operations unsafe, before it runs (see the limits in scene_json_detail.h).
+// Everything else is left for the parser to judge.
 std::optional<Diagnostic> prescan(std::string_view text)
 {
+    auto refuse = [&](std::size_t offset, std::string message) {
+        Diagnostic d = makeError(std::move(message));
+        setTextPosition(text, offset, d);
+        return d;
+    };
+    auto isNumberChar = [](char c) {
+        return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+    };
+    auto isWhitespace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
     int depth = 0;
-    bool inString = false;
-    std::size_t numberStart = 0;
-    std::size_t numberLength = 0;
-    for (std::size_t i = 0; i < text.size(); ++i) {
+    std::size_t values = 0;
+    for (std::size_t i = 0; i < text.size();) {
         const char c = text[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-            continue;
-        }
-        const bool numberChar = (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' ||
-                                c == 'e' || c == 'E';
-        if (numberChar) {
-            if (numberLength++ == 0)
-                numberStart = i;
-            if (numberLength > kMaxNumberLength) {
-                Diagnostic d = makeError("number longer than " + std::to_string(kMaxNumberLength) +
-                                         " characters");
-                setTextPosition(text, numberStart, d);
-                return d;
-            }
-            continue;
-        }
-        numberLength = 0;
+        const std::size_t start = i;
         if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxNestingDepth) {
-                Diagnostic d = makeError("arrays and objects nested deeper than " +
+            for (++i; i < text.size() && text[i] != '"'; ++i) {
+                if (text[i] == '\\')
+                    ++i;
+                if (i - start > kMaxStringLength)
+                    return refuse(start, "string longer than 1 MiB (a missing closing quote?)");
+            }
+            ++i;
+        } else if (isNumberChar(c)) {
+            while (i < text.size() && isNumberChar(text[i]))
+                ++i;
+            if (i - start > kMaxNumberLength)
+                return refuse(start, "number longer than " + std::to_string(kMaxNumberLength) +
+                                         " characters");
+        } else if (isWhitespace(c)) {
+            while (i < text.size() && isWhitespace(text[i]))
+                ++i;
+            if (i - start > kMaxWhitespaceRun)
+                return refuse(start, "more than 1 MiB of white space in a row");
+        } else {
+            if (c == '[' || c == '{') {
+                if (++depth > kMaxNestingDepth)
+                    return refuse(i, "arrays and objects nested deeper than " +
                                          std::to_string(kMaxNestingDepth) +
                                          " levels (a scene needs 7)");
-                setTextPosition(text, i, d);
-                return d;
+            } else if ((c == ']' || c == '}') && depth > 0) {
+                --depth;
+            } else if (c == ',' && ++values > kMaxValueCount) {
+                return refuse(i, "more than " + std::to_string(kMaxValueCount) +
+                                     " values (more than a scene of a million faces needs)");
             }
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
+            ++i;
         }
     }
     return std::nullopt;

@@ -13,13 +13,20 @@
 
 namespace regio::model::detail {
 
-// Limits that keep hostile input harmless. A scene nests 7 levels deep
-// (root, objects, object, parts, part, vertices, vertex); recursion over the
-// parsed tree stays far from the stack limit below 64. No double needs more
-// than a few dozen characters; longer runs are refused before the number
-// parser sees them (strtod on a gigabyte of digits is slow and pointless).
+// Limits that keep hostile input harmless, checked by a linear scan before
+// the parser runs. A scene nests 7 levels deep (root, objects, object, parts,
+// part, vertices, vertex); recursion over the parsed tree stays far from the
+// stack limit below 64. No double needs more than a few dozen characters
+// (strtod on a gigabyte of digits is slow and pointless). The parser keeps
+// the text of a whole token (and of the white space before it) and copies it
+// into its error message several times: a gigabyte-long string took minutes
+// and 8 GB. Every parsed value costs about 16 bytes plus containers, so the
+// value count bounds memory (a million-face scene has about 16 million).
 inline constexpr int kMaxNestingDepth = 64;
 inline constexpr std::size_t kMaxNumberLength = 1000;
+inline constexpr std::size_t kMaxStringLength = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxWhitespaceRun = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxValueCount = std::size_t{64} << 20;
 
 struct JsonText {
     std::optional<nlohmann::json> document; // empty on a syntax error

@@ -322,6 +322,15 @@ TEST(SceneJsonSyntax, ColumnsCountCharactersNotBytes)
     EXPECT_EQ(first.diagnostics[0].column, 7);
 }
 
+TEST(SceneJsonSyntax, AByteOrderMarkIsAcceptedAndNotCountedAsAColumn)
+{
+    const SceneReadResult good = parseScene("\xEF\xBB\xBF" + sceneWith(""));
+    EXPECT_TRUE(good.scene) << describe(good.diagnostics);
+    const SceneReadResult bad = parseScene("\xEF\xBB\xBF{x");
+    ASSERT_EQ(bad.diagnostics.size(), 1u);
+    EXPECT_EQ(bad.diagnostics[0].column, 2);
+}
+
 TEST(SceneJsonSyntax, ASyntaxErrorNamesTheValueBeingRead)
 {
     const SceneReadResult read = parseScene(R"({"materials": [{"id": "a"}, {"reflectance": [0.5, 0.5 0.5]}]})");
@@ -372,6 +381,45 @@ TEST(SceneJsonSyntax, AHugeNumberIsRefusedQuicklyAtItsPosition)
     EXPECT_EQ(read.diagnostics[0].line, 1);
     EXPECT_EQ(read.diagnostics[0].column, 38);
     EXPECT_LT(seconds, 2.0);
+}
+
+TEST(SceneJsonSyntax, AnUnterminatedHugeStringIsRefusedAtItsOpeningQuote)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const std::string text = "{\n  \"format\": \"" + std::string(64u << 20, 'a');
+    const SceneReadResult read = parseScene(text);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(read.diagnostics.size(), 1u);
+    EXPECT_EQ(read.diagnostics[0].message, "string longer than 1 MiB (a missing closing quote?)");
+    EXPECT_EQ(read.diagnostics[0].line, 2);
+    EXPECT_EQ(read.diagnostics[0].column, 13);
+    EXPECT_LT(seconds, 2.0);
+}
+
+TEST(SceneJsonSyntax, StringsUpToTheLimitAreRead)
+{
+    const std::string name(1000000, 'n');
+    const SceneReadResult read = parseScene(sceneWith(R"(, "name": ")" + name + "\""));
+    ASSERT_TRUE(read.scene) << describe(read.diagnostics);
+    EXPECT_EQ(read.scene->materials[0].name, name);
+}
+
+TEST(SceneJsonSyntax, AGiganticRunOfWhiteSpaceIsRefused)
+{
+    const SceneReadResult read = parseScene("{" + std::string(3u << 20, ' ') + "x");
+    ASSERT_EQ(read.diagnostics.size(), 1u);
+    EXPECT_EQ(read.diagnostics[0].message, "more than 1 MiB of white space in a row");
+    EXPECT_EQ(read.diagnostics[0].column, 2);
+}
+
+TEST(SceneJsonSyntax, MoreValuesThanAnySceneNeedsAreRefusedBeforeTheyFillMemory)
+{
+    const std::string text = "[" + std::string((64u << 20) + 1, ',');
+    const SceneReadResult read = parseScene(text);
+    ASSERT_EQ(read.diagnostics.size(), 1u);
+    EXPECT_NE(read.diagnostics[0].message.find("values (more than a scene of a million faces needs)"),
+              std::string::npos)
+        << read.diagnostics[0].message;
 }
 
 TEST(SceneJsonSyntax, ANumberBeyondTheRangeOfADoubleIsAnErrorNotInfinity)
