@@ -6,7 +6,7 @@
 namespace regio::solver {
 
 Hemicube::Hemicube(int resolution)
-    : m_n(std::max(2, resolution + (resolution & 1)))
+    : m_n(std::clamp(resolution + (resolution & 1), 2, kMaxHemicubeResolution))
 {
     const int h = m_n / 2;
     m_faceOffset[0] = 0;

@@ -19,11 +19,14 @@ namespace regio::solver {
 
 enum class HemicubeFace : std::uint8_t { Top = 0, PosX = 1, NegX = 2, PosY = 3, NegY = 4 };
 inline constexpr int kHemicubeFaceCount = 5;
+// Largest top-face resolution: 4096^2 x 3 ids is already 200 MB, and the
+// rasteriser's exact 64-bit edge arithmetic is proven up to this size.
+inline constexpr int kMaxHemicubeResolution = 4096;
 
 class Hemicube {
 public:
     // `resolution` is the top face's N; odd values are rounded up so that the
-    // side faces have an integral N/2 rows. At least 2.
+    // side faces have an integral N/2 rows. Clamped to [2, kMaxHemicubeResolution].
     explicit Hemicube(int resolution);
 
     int resolution() const { return m_n; }

@@ -93,11 +93,28 @@ int clipAgainst(int k, bool top, const Vec3* in, int count, Vec3* out)
     return n;
 }
 
-// ceil(num / den) for den > 0 (C++ division truncates towards zero).
-inline std::int64_t ceilDiv(std::int64_t num, std::int64_t den)
+// ceil(num / 2^bits), an arithmetic shift.
+template <int bits>
+inline std::int64_t ceilShift(std::int64_t num)
 {
-    const std::int64_t q = num / den;
-    return q + ((num % den) > 0 ? 1 : 0);
+    return -((-num) >> bits);
+}
+
+// Exact q = floor(num / den) and r = num - q den in [0, den), den > 0, from a
+// floating-point estimate corrected by the remainder: 64-bit idiv is the
+// slowest instruction of a triangle setup.
+inline void floorDivMod(std::int64_t num, std::int64_t den, std::int64_t& q, std::int64_t& r)
+{
+    q = static_cast<std::int64_t>(static_cast<double>(num) / static_cast<double>(den));
+    r = num - q * den;
+    while (r < 0) {
+        r += den;
+        --q;
+    }
+    while (r >= den) {
+        r -= den;
+        ++q;
+    }
 }
 
 } // namespace
@@ -126,9 +143,40 @@ std::uint32_t hemicubeOutcode(const Vec3& p)
 
 HemicubeRaster::HemicubeRaster(const Hemicube& hemicube)
     : m_n(hemicube.resolution())
+    , m_scale(0.5 * m_n * double(1 << kSubpixelBits))
+    , m_maxX(m_n << kSubpixelBits)
+    , m_maxSideY((m_n / 2) << kSubpixelBits)
     , m_left(static_cast<size_t>(m_n))
     , m_right(static_cast<size_t>(m_n))
 {
+}
+
+namespace {
+
+// Rounds half up; inputs below -0.5 (rounding noise outside the face) end
+// up clamped to 0 anyway. A plain conversion: llround is a library call.
+inline std::int32_t snap(double v, std::int32_t max)
+{
+    if (!(v > 0.0))
+        return 0;
+    const double r = v + 0.5;
+    return r >= double(max) ? max : static_cast<std::int32_t>(r);
+}
+
+} // namespace
+
+// x = (a/w + 1) N/2, y = (b/w + 1) N/2 on the top face and (b/w) N/2 on a
+// side face, in 1/2^kSubpixelBits pixel units, from face coordinates (a, b, w).
+static inline FixedVertex projectFace(const Vec3& c, bool top, double scale, std::int32_t maxX, std::int32_t maxY)
+{
+    const double inv = 1.0 / c.z;
+    return {snap((c.x * inv + 1.0) * scale, maxX), snap((c.y * inv + (top ? 1.0 : 0.0)) * scale, maxY)};
+}
+
+FixedVertex HemicubeRaster::project(HemicubeFace face, const Vec3& local) const
+{
+    const bool top = face == HemicubeFace::Top;
+    return projectFace(faceCoordinates(face, local), top, m_scale, m_maxX, top ? m_maxX : m_maxSideY);
 }
 
 bool HemicubeRaster::setupFace(HemicubeFace face, std::span<const Vec3> local, std::uint32_t clipMask)
@@ -149,40 +197,37 @@ bool HemicubeRaster::setupFace(HemicubeFace face, std::span<const Vec3> local, s
     }
     if (count < 3)
         return false;
-
-    // Project and snap: x = (a/w + 1) N/2, y = (b/w + 1) N/2 on the top face
-    // and (b/w) N/2 on a side face, in 1/2^kSubpixelBits pixel units.
-    const double scale = 0.5 * m_n * double(1 << kSubpixelBits);
-    const std::int64_t maxX = std::int64_t(m_n) << kSubpixelBits;
-    const std::int64_t maxY = top ? maxX : (std::int64_t(m_n / 2) << kSubpixelBits);
-    const double yOffset = top ? 1.0 : 0.0;
-    for (int i = 0; i < count; ++i) {
-        const double inv = 1.0 / cur[i].z;
-        const auto x = static_cast<std::int64_t>(std::llround((cur[i].x * inv + 1.0) * scale));
-        const auto y = static_cast<std::int64_t>(std::llround((cur[i].y * inv + yOffset) * scale));
-        m_fixed[i] = {std::clamp<std::int64_t>(x, 0, maxX), std::clamp<std::int64_t>(y, 0, maxY)};
-    }
+    const std::int32_t maxY = top ? m_maxX : m_maxSideY;
+    for (int i = 0; i < count; ++i)
+        m_fixed[i] = projectFace(cur[i], top, m_scale, m_maxX, maxY);
     m_fixedCount = count;
+    return setupSpans(face);
+}
 
-    std::int64_t area2 = 0;
-    std::int64_t yMin = m_fixed[0].y, yMax = m_fixed[0].y;
-    for (int i = 0; i < count; ++i) {
-        const FixedVertex& p = m_fixed[i];
-        const FixedVertex& q = m_fixed[(i + 1) % count];
-        area2 += p.x * q.y - q.x * p.y;
-        yMin = std::min(yMin, p.y);
-        yMax = std::max(yMax, p.y);
+bool HemicubeRaster::setupSpans(HemicubeFace face)
+{
+    const int count = m_fixedCount;
+    std::int32_t yMin = m_fixed[0].y, yMax = m_fixed[0].y;
+    for (int i = 1; i < count; ++i) {
+        yMin = std::min(yMin, m_fixed[i].y);
+        yMax = std::max(yMax, m_fixed[i].y);
     }
-    if (area2 == 0)
-        return false;
-
-    // Rows whose pixel centre (j + 1/2) lies in [yMin, yMax).
+    // Rows whose pixel centre (j + 1/2) lies in [yMin, yMax). Small elements
+    // often cover no row centre at all: leave before any other work.
     constexpr std::int64_t one = std::int64_t(1) << kSubpixelBits;
     constexpr std::int64_t half = one / 2;
-    const int height = top ? m_n : m_n / 2;
-    m_rowBegin = static_cast<int>(std::max<std::int64_t>(0, ceilDiv(yMin - half, one)));
-    m_rowEnd = static_cast<int>(std::min<std::int64_t>(height, ceilDiv(yMax - half, one)));
+    const int height = face == HemicubeFace::Top ? m_n : m_n / 2;
+    m_rowBegin = static_cast<int>(std::max<std::int64_t>(0, ceilShift<kSubpixelBits>(yMin - half)));
+    m_rowEnd = static_cast<int>(std::min<std::int64_t>(height, ceilShift<kSubpixelBits>(yMax - half)));
     if (m_rowBegin >= m_rowEnd)
+        return false;
+    std::int64_t area2 = 0;
+    for (int i = 0; i < count; ++i) {
+        const FixedVertex& p = m_fixed[i];
+        const FixedVertex& q = m_fixed[i + 1 == count ? 0 : i + 1];
+        area2 += std::int64_t(p.x) * q.y - std::int64_t(q.x) * p.y;
+    }
+    if (area2 == 0)
         return false;
     for (int j = m_rowBegin; j < m_rowEnd; ++j) {
         m_left[j] = std::numeric_limits<std::int32_t>::min();
@@ -193,31 +238,47 @@ bool HemicubeRaster::setupFace(HemicubeFace face, std::span<const Vec3> local, s
     // right depending on the polygon's orientation (with positive area the
     // interior lies left of every directed edge, so an upward edge bounds it
     // on the right). The bound for row j is the first pixel whose centre is
-    // at or right of the edge: ceil((X - 1/2) / 1) in pixel units, computed as
-    // one exact division from the edge taken bottom-up.
+    // at or right of the edge, ceil((X_j - 1/2) / 1) in pixel units, with the
+    // edge always taken bottom-up so both polygons sharing it agree exactly.
+    // The first row costs one division; the others step the quotient and
+    // remainder (an exact integer DDA).
     const bool positive = area2 > 0;
     for (int i = 0; i < count; ++i) {
         FixedVertex p = m_fixed[i];
-        FixedVertex q = m_fixed[(i + 1) % count];
+        FixedVertex q = m_fixed[i + 1 == count ? 0 : i + 1];
         if (p.y == q.y)
             continue;
         const bool upward = q.y > p.y;
         const bool rightEdge = upward == positive;
         if (!upward)
             std::swap(p, q);
-        const std::int64_t dy = q.y - p.y;
-        const std::int64_t dx = q.x - p.x;
-        const int j0 = static_cast<int>(std::max<std::int64_t>(m_rowBegin, ceilDiv(p.y - half, one)));
-        const int j1 = static_cast<int>(std::min<std::int64_t>(m_rowEnd, ceilDiv(q.y - half, one)));
+        const int j0 = static_cast<int>(std::max<std::int64_t>(m_rowBegin, ceilShift<kSubpixelBits>(p.y - half)));
+        const int j1 = static_cast<int>(std::min<std::int64_t>(m_rowEnd, ceilShift<kSubpixelBits>(q.y - half)));
+        if (j0 >= j1)
+            continue;
+        const std::int64_t dy = std::int64_t(q.y) - p.y;
+        const std::int64_t dx = std::int64_t(q.x) - p.x;
         const std::int64_t den = dy * one;
-        std::int64_t num = (p.x - half) * dy + ((std::int64_t(j0) * one + half) - p.y) * dx;
-        const std::int64_t step = one * dx;
-        if (rightEdge) {
-            for (int j = j0; j < j1; ++j, num += step)
-                m_right[j] = std::min(m_right[j], ceilDiv(num, den));
-        } else {
-            for (int j = j0; j < j1; ++j, num += step)
-                m_left[j] = std::max(m_left[j], ceilDiv(num, den));
+        const std::int64_t num = (p.x - half) * dy + ((std::int64_t(j0) * one + half) - p.y) * dx;
+        // bound = ceil(num / den) and rem = bound den - num in [0, den).
+        std::int64_t bound, rem;
+        floorDivMod(num, den, bound, rem);
+        if (rem != 0) {
+            ++bound;
+            rem = den - rem;
+        }
+        std::int64_t stepQ, stepR; // one dx = stepQ den + stepR, 0 <= stepR < den
+        floorDivMod(one * dx, den, stepQ, stepR);
+        std::int64_t* bounds = rightEdge ? m_right.data() : m_left.data();
+        for (int j = j0; j < j1; ++j) {
+            if (rightEdge ? bound < bounds[j] : bound > bounds[j])
+                bounds[j] = bound;
+            bound += stepQ;
+            rem -= stepR;
+            if (rem < 0) {
+                rem += den;
+                ++bound;
+            }
         }
     }
     return true;

@@ -72,14 +72,31 @@ inline constexpr std::uint32_t faceOutcodeBits(int face) { return 0x1Fu << (5 * 
 inline constexpr std::uint32_t kAllOutcodeBits = 0x1FFFFFFu;
 std::uint32_t hemicubeOutcode(const Vec3& local);
 
+// A projected vertex: fixed-point pixel coordinates with kSubpixelBits
+// fractional bits (x along a face's columns, y along its rows).
+struct FixedVertex {
+    std::int32_t x = 0;
+    std::int32_t y = 0;
+};
+
 class HemicubeRaster {
 public:
-    // Fixed-point precision of projected vertices: 1/256 pixel.
-    static constexpr int kSubpixelBits = 8;
+    // Fixed-point precision of projected vertices: 1/65536 pixel. Fine
+    // snapping keeps the slivers that T-junctions (BSP splits, region clips)
+    // open between snapped edges too thin to hold a pixel centre; coordinates
+    // fit 32 bits and the edge arithmetic stays exact in 64 bits up to
+    // kMaxHemicubeResolution.
+    static constexpr int kSubpixelBits = 16;
     static constexpr int kMaxInputVertices = 16;
 
     explicit HemicubeRaster(const Hemicube& hemicube);
     int resolution() const { return m_n; }
+
+    // The snapped projection of a point inside a face's frustum (its outcode
+    // has no bit of that face). Every path projects through this function, so
+    // a vertex cached once per shooter and a vertex projected while clipping
+    // land on the same fixed-point position.
+    FixedVertex project(HemicubeFace face, const Vec3& local) const;
 
     // Scan-converts a convex polygon (local frame, at most kMaxInputVertices
     // vertices) on every face it reaches; calls op(face, row, x0, x1) for each
@@ -93,14 +110,8 @@ public:
             if (andCode & bits)
                 continue;
             const auto face = static_cast<HemicubeFace>(f);
-            if (!setupFace(face, local, (orCode & bits) >> (5 * f)))
-                continue;
-            for (int row = m_rowBegin; row < m_rowEnd; ++row) {
-                const int x0 = m_left[row] < 0 ? 0 : static_cast<int>(m_left[row]);
-                const int x1 = m_right[row] > m_n ? m_n : static_cast<int>(m_right[row]);
-                if (x0 < x1)
-                    op(face, row, x0, x1);
-            }
+            if (setupFace(face, local, (orCode & bits) >> (5 * f)))
+                emitSpans(face, op);
         }
     }
     // Same, computing the outcodes itself.
@@ -115,21 +126,60 @@ public:
         }
         rasterize(local, orCode, andCode, op);
     }
+    // A triangle whose vertices were projected beforehand: projected[k][f] is
+    // project(face f, local[k]), valid for every face the vertex lies inside.
+    // Faces the triangle lies wholly inside skip clipping and projection; the
+    // others take the clipping path. The pixels are the same either way.
+    template <class SpanOp>
+    void rasterizeTriangle(const Vec3* const local[3], const FixedVertex* const projected[3], std::uint32_t orCode,
+                           std::uint32_t andCode, SpanOp&& op)
+    {
+        for (int f = 0; f < kHemicubeFaceCount; ++f) {
+            const std::uint32_t bits = faceOutcodeBits(f);
+            if (andCode & bits)
+                continue;
+            const auto face = static_cast<HemicubeFace>(f);
+            bool any;
+            if (orCode & bits) {
+                const Vec3 polygon[3] = {*local[0], *local[1], *local[2]};
+                any = setupFace(face, polygon, (orCode & bits) >> (5 * f));
+            } else {
+                m_fixed[0] = projected[0][f];
+                m_fixed[1] = projected[1][f];
+                m_fixed[2] = projected[2][f];
+                m_fixedCount = 3;
+                any = setupSpans(face);
+            }
+            if (any)
+                emitSpans(face, op);
+        }
+    }
 
-    // The snapped, projected polygon of the last face set up (for tests):
-    // fixed-point pixel coordinates, kSubpixelBits fractional bits.
-    struct FixedVertex {
-        std::int64_t x;
-        std::int64_t y;
-    };
+    // The snapped, projected polygon of the last face set up (for tests).
     std::span<const FixedVertex> lastProjection() const { return {m_fixed, static_cast<size_t>(m_fixedCount)}; }
 
 private:
     // Clips against the planes flagged in `clipMask` (bit k = plane k of the
     // face), projects, snaps and computes the row spans. False if nothing is left.
     bool setupFace(HemicubeFace face, std::span<const Vec3> local, std::uint32_t clipMask);
+    // Row spans of the snapped polygon in m_fixed. False if it covers no pixel centre.
+    bool setupSpans(HemicubeFace face);
+
+    template <class SpanOp>
+    void emitSpans(HemicubeFace face, SpanOp& op)
+    {
+        for (int row = m_rowBegin; row < m_rowEnd; ++row) {
+            const int x0 = m_left[row] < 0 ? 0 : static_cast<int>(m_left[row]);
+            const int x1 = m_right[row] > m_n ? m_n : static_cast<int>(m_right[row]);
+            if (x0 < x1)
+                op(face, row, x0, x1);
+        }
+    }
 
     int m_n = 0;
+    double m_scale = 0.0; // pixels per unit of a/w, times 2^kSubpixelBits
+    std::int32_t m_maxX = 0;
+    std::int32_t m_maxSideY = 0;
     int m_rowBegin = 0;
     int m_rowEnd = 0;
     std::vector<std::int64_t> m_left;  // first covered column per row

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 namespace regio::solver {
 
@@ -38,6 +39,7 @@ void Visibility::prepareFrame(const ShooterFrame& frame)
     if (m_stamp.size() != count) {
         m_local.resize(count);
         m_outcode.resize(count);
+        m_projected.resize(count * kHemicubeFaceCount);
         m_stamp.assign(count, 0);
         m_currentStamp = 0;
     }
@@ -53,8 +55,16 @@ inline void Visibility::touch(int vertex)
     if (m_stamp[v] == m_currentStamp)
         return;
     m_stamp[v] = m_currentStamp;
-    m_local[v] = m_frame.toLocal(m_scene.vertices[v]);
-    m_outcode[v] = hemicubeOutcode(m_local[v]);
+    const Vec3 local = m_frame.toLocal(m_scene.vertices[v]);
+    const std::uint32_t code = hemicubeOutcode(local);
+    m_local[v] = local;
+    m_outcode[v] = code;
+    // Project once per shooter onto the faces whose frustum holds the vertex
+    // (one, or two on a border): elements inside a face then skip projection.
+    FixedVertex* projected = &m_projected[v * kHemicubeFaceCount];
+    for (int f = 0; f < kHemicubeFaceCount; ++f)
+        if (!(code & faceOutcodeBits(f)))
+            projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
 }
 
 bool Visibility::regionCulled(int region) const
@@ -81,8 +91,11 @@ inline void Visibility::rasteriseElement(int element, Paint&& paint)
         return;
     ++m_stats.elementsRasterised;
     const std::uint32_t orCode = m_outcode[i0] | m_outcode[i1] | m_outcode[i2];
-    const std::array<Vec3, 3> local{m_local[i0], m_local[i1], m_local[i2]};
-    m_raster.rasterize(local, orCode, andCode, paint);
+    const Vec3* const local[3] = {&m_local[i0], &m_local[i1], &m_local[i2]};
+    const FixedVertex* const projected[3] = {&m_projected[i0 * kHemicubeFaceCount],
+                                             &m_projected[i1 * kHemicubeFaceCount],
+                                             &m_projected[i2 * kHemicubeFaceCount]};
+    m_raster.rasterizeTriangle(local, projected, orCode, andCode, paint);
 }
 
 void Visibility::paintElement(int element, ItemId id, ItemBuffer& buffer)
@@ -106,16 +119,23 @@ void Visibility::depthTestElement(int element, ItemId id, ItemBuffer& buffer)
         return; // the plane contains the shooter's centre: seen edge-on
     const int n = m_hemicube.resolution();
     const double pixel = 2.0 / n;
+    // Where a back face meets a front face along a silhouette edge both cover
+    // the edge pixels at almost equal depth, and float rounding would pick
+    // either. The back face is never in front there (it belongs to the same
+    // solid), so it is pushed back by far more than the rounding.
+    const double scale = (id == kBlockerItem ? 1.0 - 1e-5 : 1.0) / -dLocal;
     rasteriseElement(element, [&](HemicubeFace f, int row, int x0, int x1) {
         const Vec3 nf = faceCoordinates(f, nLocal);
         const double sy = (row + 0.5) * pixel - (f == HemicubeFace::Top ? 1.0 : 0.0);
-        const double base = -(nf.y * sy + nf.z) / dLocal;
-        const double slope = -nf.x / dLocal;
+        const double base = (nf.y * sy + nf.z) * scale;
+        const double slope = nf.x * scale;
         ItemId* ids = buffer.face(f) + row * n;
         float* depth = buffer.depth(f) + row * n;
         for (int x = x0; x < x1; ++x) {
             const double sx = (x + 0.5) * pixel - 1.0;
-            const auto inv = static_cast<float>(base + slope * sx);
+            // A covered pixel whose centre ray grazes past the plane (snapping
+            // at the horizon) still belongs to the element: never below "far".
+            const float inv = std::max(static_cast<float>(base + slope * sx), std::numeric_limits<float>::min());
             if (inv > depth[x]) {
                 depth[x] = inv;
                 ids[x] = id;

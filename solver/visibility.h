@@ -71,6 +71,7 @@ private:
     // Per-vertex cache, valid for the shooter whose stamp it carries.
     std::vector<Vec3> m_local;
     std::vector<std::uint32_t> m_outcode;
+    std::vector<FixedVertex> m_projected; // kHemicubeFaceCount per vertex
     std::vector<std::uint32_t> m_stamp;
     std::uint32_t m_currentStamp = 0;
     std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter

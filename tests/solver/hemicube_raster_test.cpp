@@ -306,7 +306,7 @@ TEST(HemicubeRaster, ProjectedVerticesAreSnappedToFixedPoint)
     raster.rasterize(std::vector<Vec3>{{0.013, 0.027, 1}, {0.5, 0.0, 1}, {0.0, 0.5, 1}},
                      [](HemicubeFace, int, int, int) {});
     ASSERT_EQ(raster.lastProjection().size(), 3u);
-    // (0.013 + 1) * 5 pixels = 5.065 -> 1296.64 / 256 -> 1297.
-    EXPECT_EQ(raster.lastProjection()[0].x, 1297);
-    EXPECT_EQ(raster.lastProjection()[1].x, 7.5 * 256);
+    // (0.013 + 1) * 5 pixels = 5.065 pixels -> 331939.84 / 65536 -> 331940.
+    EXPECT_EQ(raster.lastProjection()[0].x, 331940);
+    EXPECT_EQ(raster.lastProjection()[1].x, 7.5 * 65536);
 }

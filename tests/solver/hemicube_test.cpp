@@ -55,6 +55,7 @@ TEST(Hemicube, OddResolutionIsRoundedUpToEven)
 {
     EXPECT_EQ(Hemicube(151).resolution(), 152);
     EXPECT_EQ(Hemicube(1).resolution(), 2);
+    EXPECT_EQ(Hemicube(100000).resolution(), kMaxHemicubeResolution);
 }
 
 TEST(Hemicube, StoresOneQuarterOfTheTopAndHalfOfASide)

@@ -4,6 +4,7 @@
 #include "model/scene.h"
 #include "model/scene_json.h"
 
+#include <algorithm>
 #include <array>
 #include <random>
 #include <string>
