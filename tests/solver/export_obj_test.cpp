@@ -1,0 +1,130 @@
+// OBJ export with vertex colours ("v x y z r g b"), normals and one group per
+// input face, read back by a small OBJ reader.
+#include "solver/export_obj.h"
+
+#include "export_test_support.h"
+#include "lit_mesh_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace regio::solver;
+using regio::test::freshOutputFolder;
+using regio::test::readBytes;
+using regio::test::sampleRoom;
+
+namespace {
+
+struct ObjFile {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> colours;
+    std::vector<glm::vec3> normals;
+    std::vector<std::array<int, 3>> faces; // 0-based position indices
+    std::map<std::string, size_t> facesPerGroup;
+};
+
+ObjFile readObj(const std::string& text)
+{
+    ObjFile obj;
+    std::istringstream in(text);
+    std::string line;
+    std::string group;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (keyword == "v") {
+            glm::vec3 p, c;
+            words >> p.x >> p.y >> p.z >> c.x >> c.y >> c.z;
+            EXPECT_FALSE(words.fail()) << "six numbers: " << line;
+            obj.positions.push_back(p);
+            obj.colours.push_back(c);
+        } else if (keyword == "vn") {
+            glm::vec3 n;
+            words >> n.x >> n.y >> n.z;
+            obj.normals.push_back(n);
+        } else if (keyword == "g") {
+            words >> group;
+        } else if (keyword == "f") {
+            std::array<int, 3> f{};
+            for (int& i : f) {
+                std::string corner;
+                words >> corner;
+                const size_t slashes = corner.find("//");
+                EXPECT_NE(slashes, std::string::npos) << corner;
+                i = std::stoi(corner.substr(0, slashes)) - 1;
+                EXPECT_EQ(corner.substr(slashes + 2), corner.substr(0, slashes)) << "normal index = position index";
+            }
+            std::string extra;
+            EXPECT_FALSE(words >> extra) << "triangles only";
+            obj.faces.push_back(f);
+            ++obj.facesPerGroup[group];
+        }
+    }
+    return obj;
+}
+
+DisplayColours colours(const LitMesh& mesh)
+{
+    ToneMapSettings s;
+    s.whiteReference = 6.0;
+    return toneMappedColours(mesh, ToneMap::forMesh(s, mesh));
+}
+
+} // namespace
+
+TEST(ObjExport, ReadsBackWithTheSameVerticesAndColours)
+{
+    const auto folder = freshOutputFolder();
+    const LitMesh mesh = sampleRoom();
+    const DisplayColours c = colours(mesh);
+    const auto path = folder / "room.obj";
+    ASSERT_FALSE(writeObj(path.string(), mesh, c));
+
+    const ObjFile obj = readObj(readBytes(path));
+    ASSERT_EQ(obj.positions.size(), mesh.vertexCount());
+    ASSERT_EQ(obj.normals.size(), mesh.vertexCount());
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        EXPECT_EQ(obj.positions[v], mesh.positions[v]) << "shortest round-trip numbers";
+        EXPECT_EQ(obj.normals[v], mesh.normals[v]);
+        EXPECT_EQ(obj.colours[v], c.encoded(v)) << "display-encoded colours in [0,1]";
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(obj.colours[v][k], 0.0f);
+            EXPECT_LE(obj.colours[v][k], 1.0f);
+        }
+    }
+    ASSERT_EQ(obj.faces.size(), mesh.triangleCount());
+}
+
+TEST(ObjExport, TrianglesAreGroupedByInputFaceWithTheirWindingKept)
+{
+    const auto folder = freshOutputFolder();
+    const LitMesh mesh = sampleRoom();
+    const auto path = folder / "room.obj";
+    ASSERT_FALSE(writeObj(path.string(), mesh, colours(mesh)));
+    const ObjFile obj = readObj(readBytes(path));
+    ASSERT_EQ(obj.facesPerGroup.size(), mesh.faceIds.size());
+    for (const std::string& id : mesh.faceIds)
+        EXPECT_EQ(obj.facesPerGroup.at(id), 2u) << id;
+    // Every written triangle is one of the mesh's, corners in the same order.
+    std::set<std::array<int, 3>> triangles;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        triangles.insert({static_cast<int>(mesh.indices[3 * t]), static_cast<int>(mesh.indices[3 * t + 1]),
+                          static_cast<int>(mesh.indices[3 * t + 2])});
+    for (const auto& f : obj.faces)
+        EXPECT_EQ(triangles.count(f), 1u);
+}
+
+TEST(ObjExport, AnUnwritablePathIsNamedInTheError)
+{
+    const auto folder = freshOutputFolder();
+    const LitMesh mesh = sampleRoom();
+    const std::string path = (folder / "no" / "room.obj").string();
+    const auto error = writeObj(path, mesh, colours(mesh));
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->find(path), std::string::npos) << *error;
+}
