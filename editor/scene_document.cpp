@@ -132,6 +132,12 @@ bool SceneDocument::endMacro()
 
 void SceneDocument::notify(Change changes)
 {
+    // Edits may remove selected elements (delete, ungroup, split). Views
+    // read the selection while handling the change signals, so it must name
+    // only what exists before any of them is emitted.
+    Selection pruned = m_selection.prunedTo(m_scene);
+    const bool selectionChanged = !(pruned == m_selection);
+    m_selection = std::move(pruned);
     if (changes & Change::Objects)
         emit objectsChanged();
     if (changes & Change::Materials)
@@ -142,13 +148,8 @@ void SceneDocument::notify(Change changes)
         emit settingsChanged();
     if (changes & Change::Camera)
         emit cameraChanged();
-    // Edits may remove selected elements (delete, ungroup, split): keep the
-    // selection naming only what exists.
-    Selection pruned = m_selection.prunedTo(m_scene);
-    if (!(pruned == m_selection)) {
-        m_selection = std::move(pruned);
-        emit selectionChanged();
-    }
+    if (selectionChanged)
+        emit this->selectionChanged();
 }
 
 void SceneDocument::reportFailure(const model::Diagnostic& diagnostic)

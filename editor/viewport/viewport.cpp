@@ -64,11 +64,20 @@ Viewport::Viewport(SceneDocument* document, QWidget* parent)
 
 Viewport::~Viewport()
 {
-    if (m_glReady) {
-        makeCurrent();
-        m_renderer.release();
-        doneCurrent();
-    }
+    // The base class destroys the context after this object's members are
+    // gone: release the GL objects now and stop listening for that.
+    disconnect(m_contextConnection);
+    releaseGl();
+}
+
+void Viewport::releaseGl()
+{
+    if (!m_glReady)
+        return;
+    makeCurrent();
+    m_renderer.release();
+    m_glReady = false;
+    doneCurrent();
 }
 
 ScreenView Viewport::screenView() const
@@ -264,12 +273,10 @@ void Viewport::initializeGL()
     if (!m_glReady)
         emit renderingFailed(m_renderingError);
     m_geometryDirty = m_coloursDirty = m_selectionDirty = m_regionsDirty = m_gridDirty = m_toolDirty = true;
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
-        makeCurrent();
-        m_renderer.release();
-        m_glReady = false;
-        doneCurrent();
-    });
+    // The context goes away when the widget moves to another window (docking,
+    // reparenting); initializeGL runs again on the new one.
+    disconnect(m_contextConnection);
+    m_contextConnection = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl);
 }
 
 void Viewport::resizeGL(int, int) { m_toolDirty = true; }

@@ -109,6 +109,7 @@ private:
     double sceneRadius() const;
     bool gizmoVisible() const;
     void makeCurrentAndUpload();
+    void releaseGl();
 
     SceneDocument* m_document;
     Camera m_camera;
@@ -132,6 +133,7 @@ private:
     bool m_glReady = false;
     int m_framesRendered = 0;
     QString m_renderingError;
+    QMetaObject::Connection m_contextConnection;
 
     Drag m_drag = Drag::None;
     QPoint m_pressPos;

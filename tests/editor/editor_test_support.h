@@ -28,7 +28,7 @@ inline QString samplePath(const char* name)
 }
 
 // Materials white, red and light; a table (desk + legs), a crate, a lamp
-// panel; a region around the table with a BSP order.
+// panel; a region around them with a BSP order. The scene is valid.
 inline model::Scene smallScene()
 {
     model::Scene scene;
@@ -48,7 +48,7 @@ inline model::Scene smallScene()
     model::Region region;
     region.id = "left";
     region.min = {-1, -1, -1};
-    region.max = {1.5, 3, 2};
+    region.max = {3, 3, 2};
     region.bspOrder = {"table.desk.py", "table.legs.py"};
     scene.regions = {region};
     return scene;

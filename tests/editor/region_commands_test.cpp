@@ -28,7 +28,7 @@ private slots:
         test::resetDocument(document, test::smallScene());
         const model::Scene before = document.scene();
         QSignalSpy regions(&document, &SceneDocument::regionsChanged);
-        model::Region right{"right", "Right", {1.5, -1, -1}, {3, 3, 2}, {"crate.body.py"}};
+        model::Region right{"right", "Right", {3, -1, -1}, {5, 3, 2}, {"crate.body.py"}};
         QVERIFY(document.push(new AddRegion(&document, right)));
         QCOMPARE(document.scene().regions.size(), size_t(2));
         QCOMPARE(regions.count(), 1);
@@ -72,9 +72,9 @@ private slots:
         SceneDocument document;
         test::resetDocument(document, test::smallScene());
         for (int i = 1; i <= 10; ++i)
-            QVERIFY(document.push(new SetRegionBox(&document, "left", {-1, -1, -1}, {1.5 + 0.1 * i, 3, 2})));
+            QVERIFY(document.push(new SetRegionBox(&document, "left", {-1, -1, -1}, {3 + 0.1 * i, 3, 2})));
         QCOMPARE(document.undoStack()->count(), 1);
-        QCOMPARE(document.scene().findRegion("left")->max.x, 2.5);
+        QCOMPARE(document.scene().findRegion("left")->max.x, 4.0);
         VERIFY_UNDO_REDO(document, test::smallScene());
     }
 

@@ -232,6 +232,23 @@ private slots:
         QCOMPARE(selection.count(), 1);
     }
 
+    void viewsNeverSeeASelectionNamingDeletedElements()
+    {
+        SceneDocument document;
+        test::resetDocument(document, test::smallScene());
+        document.setSelection(Selection::of(SelectionKind::Object, {"crate", "lamp"}));
+        bool consistent = true;
+        connect(&document, &SceneDocument::objectsChanged, this, [&] {
+            for (const std::string& id : document.selection().ids)
+                consistent = consistent && document.scene().findObject(id) != nullptr;
+        });
+        document.push(new RemoveObject(&document, "crate"));
+        document.undoStack()->undo();
+        document.setSelection(Selection::single(SelectionKind::Object, "crate"));
+        document.undoStack()->redo();
+        QVERIFY(consistent);
+    }
+
     void selectingAnUnknownIdSelectsNothing()
     {
         SceneDocument document;

@@ -1,0 +1,237 @@
+// The viewport on a real OpenGL 3.3 context (Xvfb + Mesa): the screenshot
+// command, where a known red face lands, picking by mouse, and buffers that
+// follow the document's change signals.
+#include "editor/commands/material_commands.h"
+#include "editor/main_window.h"
+#include "editor/scene_document.h"
+#include "editor/viewport/scene_mesh.h"
+#include "editor/viewport/viewport.h"
+#include "editor_test_support.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QProcess>
+#include <QSet>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+
+#include <memory>
+
+using namespace regio;
+using namespace regio::editor;
+
+namespace {
+
+bool reddish(QRgb c) { return qRed(c) > 90 && qRed(c) > 2 * qGreen(c) && qRed(c) > 2 * qBlue(c); }
+bool greenish(QRgb c) { return qGreen(c) > 60 && qGreen(c) > 1.5 * qRed(c) && qGreen(c) > 1.5 * qBlue(c); }
+bool bluish(QRgb c) { return qBlue(c) > 90 && qBlue(c) > 2 * qRed(c) && qBlue(c) > 1.5 * qGreen(c); }
+
+struct RunResult {
+    int exitCode = -1;
+    QString stderrText;
+};
+
+RunResult runEditor(const QStringList& arguments)
+{
+    QProcess process;
+    process.setProgram(QStringLiteral(REGIO_EDITOR_EXECUTABLE));
+    process.setArguments(arguments);
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+    process.setProcessEnvironment(env);
+    process.start();
+    if (!process.waitForFinished(120000))
+        return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromLocal8Bit(process.readAllStandardError())};
+}
+
+std::unique_ptr<MainWindow> showWindow(const QString& scene)
+{
+    MainWindowOptions options;
+    options.persistent = false;
+    options.interactive = false;
+    options.autosave = false;
+    auto window = std::make_unique<MainWindow>(options);
+    window->resize(1200, 800);
+    if (!scene.isEmpty() && !window->openFile(scene))
+        qFatal("cannot open %s", qPrintable(scene));
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        qFatal("the window was never exposed");
+    if (!QTest::qWaitFor([&] { return window->viewport()->hasRenderedFrame(); }, 20000))
+        qFatal("the viewport never rendered a frame");
+    return window;
+}
+
+// The framebuffer pixel where a face's centroid is drawn.
+QPoint pixelOfFace(const Viewport* viewport, const model::Scene& scene, const std::string& faceId)
+{
+    const model::Box3 box = boundsOfFaces(scene, {faceId});
+    const auto pixel = viewport->screenView().toPixels(box.center());
+    if (!pixel)
+        return {-1, -1};
+    return {int(pixel->x), int(pixel->y)};
+}
+
+} // namespace
+
+class ViewportGlTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { test::initTestEnvironment(); }
+
+    void theScreenshotOfTheCornellBoxIsNotBlankAndHasItsRedWallOnTheLeft()
+    {
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("cornell.png"));
+        const RunResult run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"), png,
+                                         QStringLiteral("--size"), QStringLiteral("1200x800")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.stderrText));
+        QImage image(png);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(1200, 800));
+
+        QSet<QRgb> colours;
+        qint64 redX = 0, redCount = 0, greenX = 0, greenCount = 0;
+        for (int y = 0; y < image.height(); y += 2)
+            for (int x = 0; x < image.width(); x += 2) {
+                const QRgb c = image.pixel(x, y);
+                colours.insert(c & 0xf0f0f0);
+                if (reddish(c)) {
+                    redX += x;
+                    ++redCount;
+                }
+                if (greenish(c)) {
+                    greenX += x;
+                    ++greenCount;
+                }
+            }
+        QVERIFY2(colours.size() > 50, "the screenshot is blank");
+        // The walls fill a good part of the view: thousands of sampled pixels.
+        QVERIFY(redCount > 2000);
+        QVERIFY(greenCount > 2000);
+        QVERIFY2(redX / redCount < greenX / greenCount, "the red wall is not left of the green one");
+    }
+
+    void aSceneThatCannotBeOpenedFailsTheScreenshotWithExitCode2()
+    {
+        QTemporaryDir dir;
+        const RunResult run = runEditor({dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--screenshot"),
+                                         dir.filePath(QStringLiteral("out.png"))});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.stderrText.contains(QStringLiteral("missing.json")));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("out.png"))));
+    }
+
+    void anUnwritableScreenshotPathFailsWithExitCode2()
+    {
+        const RunResult run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"),
+                                         QStringLiteral("/proc/regio-cannot-write-here/out.png")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(!run.stderrText.isEmpty());
+    }
+
+    void theViewportRunsOnAnOpenGL33CoreContext()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        const QSurfaceFormat format = window->viewport()->format();
+        QVERIFY(format.majorVersion() > 3 || (format.majorVersion() == 3 && format.minorVersion() >= 3));
+        QCOMPARE(format.profile(), QSurfaceFormat::CoreProfile);
+        QVERIFY(window->viewport()->renderingError().isEmpty());
+    }
+
+    void theRedWallIsDrawnWhereItsGeometryProjects()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        const QImage frame = viewport->grabFramebuffer();
+        const model::Scene& scene = window->document()->scene();
+        const QPoint red = pixelOfFace(viewport, scene, "left-wall.lower");
+        const QPoint green = pixelOfFace(viewport, scene, "right-wall.inside");
+        QVERIFY(frame.rect().contains(red) && frame.rect().contains(green));
+        QVERIFY(red.x() < frame.width() / 2);
+        QVERIFY2(reddish(frame.pixel(red)), qPrintable(QColor(frame.pixel(red)).name()));
+        QVERIFY2(greenish(frame.pixel(green)), qPrintable(QColor(frame.pixel(green)).name()));
+    }
+
+    void aMaterialEditRecoloursTheFacesThatUseIt()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        const QPoint red = pixelOfFace(viewport, document->scene(), "left-wall.lower");
+        QVERIFY(document->push(new SetMaterialReflectance(document, "red", {0.05, 0.1, 0.7})));
+        const QImage frame = viewport->grabFramebuffer();
+        QVERIFY2(bluish(frame.pixel(red)), qPrintable(QColor(frame.pixel(red)).name()));
+        document->undoStack()->undo();
+        QVERIFY(reddish(viewport->grabFramebuffer().pixel(red)));
+    }
+
+    void clickingAFaceSelectsItsObjectPartOrFace()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        const QPoint top = pixelOfFace(viewport, document->scene(), "short-block.top");
+        QTest::mouseClick(viewport, Qt::LeftButton, {}, top);
+        QCOMPARE(document->selection(), Selection::single(SelectionKind::Object, "short"));
+        viewport->setPickMode(PickMode::Face);
+        QTest::mouseClick(viewport, Qt::LeftButton, {}, top);
+        QCOMPARE(document->selection(), Selection::single(SelectionKind::Face, "short-block.top"));
+        // Clicking empty space clears the selection.
+        QTest::mouseClick(viewport, Qt::LeftButton, {}, QPoint(3, 3));
+        QVERIFY(document->selection().empty());
+    }
+
+    void theSelectionIsHighlighted()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        const QPoint wall = pixelOfFace(viewport, document->scene(), "right-wall.inside");
+        const QRgb before = viewport->grabFramebuffer().pixel(wall);
+        document->setSelection(Selection::single(SelectionKind::Face, "right-wall.inside"));
+        const QRgb after = viewport->grabFramebuffer().pixel(wall);
+        // The orange highlight warms the green wall.
+        QVERIFY2(qRed(after) > qRed(before) + 40, qPrintable(QColor(before).name() + QColor(after).name()));
+        document->clearSelection();
+        QCOMPARE(viewport->grabFramebuffer().pixel(wall), before);
+    }
+
+    void wireframeAndNormalViewsDrawSomethingDifferent()
+    {
+        auto window = showWindow(test::samplePath("two-lights-room.json"));
+        Viewport* viewport = window->viewport();
+        const QImage solid = viewport->grabFramebuffer();
+        viewport->setShading(ShadingMode::Wireframe);
+        const QImage wire = viewport->grabFramebuffer();
+        viewport->setShading(ShadingMode::Normals);
+        const QImage normals = viewport->grabFramebuffer();
+        QVERIFY(solid != wire);
+        QVERIFY(solid != normals);
+        QVERIFY(wire != normals);
+    }
+
+    void framingTheSelectionCentresIt()
+    {
+        auto window = showWindow(test::samplePath("two-lights-room.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        document->setSelection(Selection::single(SelectionKind::Object, "table"));
+        viewport->frameSelection();
+        const QPoint centre = pixelOfFace(viewport, document->scene(), "table.desk.py");
+        QVERIFY(std::abs(centre.x() - viewport->width() / 2) < viewport->width() / 8);
+    }
+};
+
+int main(int argc, char* argv[])
+{
+    // As in the application: the 3.3 core format before the application exists.
+    QSurfaceFormat::setDefaultFormat(Viewport::requestedFormat());
+    QApplication app(argc, argv);
+    ViewportGlTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "viewport_gl_test.moc"
