@@ -12,6 +12,8 @@
 
 #include <stb/stb_image.h>
 
+#include <sstream>
+
 using namespace regio;
 using namespace regio::solver;
 using regio::test::freshOutputFolder;
@@ -187,6 +189,42 @@ TEST(Export, AFalseColourPictureCarriesItsLegend)
     }
     EXPECT_GT(png.pixel(x, box.barTop)[0], 240) << "yellow at the top";
     EXPECT_LT(png.pixel(x, box.barBottom - 1)[1], 20) << "dark purple at the bottom";
+}
+
+TEST(Export, TheAmbientTermIsAddedOnlyWhenAsked)
+{
+    const auto folder = freshOutputFolder();
+    auto mesh = std::make_shared<SolutionMesh>();
+    mesh->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh->triangles = {{0, 1, 2}};
+    mesh->normals = {{0, 0, 1}};
+    mesh->elementFace = {0};
+    mesh->reflectance = {{0.5, 0.5, 0.5}};
+    mesh->faceIds = {"tri"};
+    SolutionSnapshot snapshot;
+    snapshot.mesh = mesh;
+    snapshot.radiosity = {{1.0, 1.0, 1.0}};
+    snapshot.stats.ambient = {2.0, 2.0, 2.0};
+
+    OutputRequest request;
+    request.display.toneMap.whiteReference = 4.0;
+    request.display.toneMap.encoding.transfer = Transfer::Linear;
+    auto firstColour = [&](const std::string& name) {
+        request.modelPath = (folder / name).string();
+        EXPECT_FALSE(writeOutputs(snapshot, request));
+        std::istringstream in(readBytes(folder / name));
+        std::string line;
+        while (std::getline(in, line) && line.rfind("v ", 0) != 0) {
+        }
+        std::istringstream words(line.substr(2));
+        float x = 0, y = 0, z = 0, r = 0;
+        words >> x >> y >> z >> r;
+        return r;
+    };
+    EXPECT_FLOAT_EQ(firstColour("solution.obj"), 0.25f) << "1 W/m^2 of a 4 W/m^2 white";
+    request.includeAmbient = true;
+    EXPECT_FLOAT_EQ(firstColour("with-ambient.obj"), 0.5f) << "plus 0.5 x 2 W/m^2 of ambient";
+    EXPECT_DOUBLE_EQ(snapshot.radiosity[0].x, 1.0) << "the solution is untouched";
 }
 
 TEST(Export, TheCornellBoxPictureHasARedLeftWallAndAGreenRightWall)
