@@ -24,6 +24,10 @@ packages=(
 
 install_missing() {
   local missing=()
+  # Node.js runs the Khronos glTF validator in the tests. A machine that
+  # already has a Node.js (e.g. from another repository) keeps it: Debian's
+  # npm package would conflict with it.
+  command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
   for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
@@ -60,6 +64,10 @@ case "$command" in
   test)
     install_missing
     configure_and_build
+    # The glTF validator (npm package gltf-validator) at the versions the
+    # committed lockfile pins.
+    gltf="$root/tests/solver/gltf"
+    [ -d "$gltf/node_modules/gltf-validator" ] || npm ci --prefix "$gltf" --no-audit --no-fund
     exec ctest --test-dir "$build" --output-on-failure -j2 "$@"
     ;;
   build)
