@@ -33,7 +33,7 @@ Authoring::Authoring(SceneDocument* document, Viewport* viewport, QWidget* dialo
     for (const auto& [kind, key] : kinds) {
         auto* action = new QAction(PrimitiveDialog::kindName(kind) + QStringLiteral("…"), this);
         action->setShortcut(key);
-        action->setStatusTip(tr("Create a new %1 object").arg(PrimitiveDialog::kindName(kind).toLower()));
+        action->setStatusTip(tr("New object: %1").arg(PrimitiveDialog::kindName(kind)));
         const PrimitiveKind k = kind;
         connect(action, &QAction::triggered, this, [this, k] { createPrimitiveInteractively(k); });
         m_createActions << action;

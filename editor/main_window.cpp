@@ -163,6 +163,7 @@ void MainWindow::applyPreferences()
 {
     m_viewport->setGridStep(m_preferences.gridStep);
     m_viewport->setSnapEnabled(m_preferences.snapToGrid);
+    m_viewport->setAngleStep(m_preferences.angleSnapDegrees);
     m_actions.snap->setChecked(m_preferences.snapToGrid);
     if (m_autosave)
         m_autosave->setIntervalMinutes(m_preferences.autosaveMinutes);

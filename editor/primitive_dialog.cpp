@@ -28,7 +28,7 @@ QString PrimitiveDialog::kindName(PrimitiveKind kind)
 PrimitiveDialog::PrimitiveDialog(const PrimitiveParams& initial, const model::Scene& scene, QWidget* parent)
     : QDialog(parent), m_params(initial)
 {
-    setWindowTitle(tr("New %1").arg(kindName(initial.kind)));
+    setWindowTitle(tr("New object: %1").arg(kindName(initial.kind)));
     auto* form = new QFormLayout(this);
 
     m_id = new QLineEdit(toQString(initial.id), this);

@@ -129,6 +129,12 @@ void Viewport::setGridStep(double metres)
     update();
 }
 
+void Viewport::setAngleStep(double degrees)
+{
+    if (degrees > 0.0)
+        m_snap.angleDegrees = degrees;
+}
+
 double Viewport::sceneRadius() const
 {
     const model::Box3& b = m_mesh.bounds();

@@ -52,6 +52,7 @@ public:
     const GizmoSnap& snap() const { return m_snap; }
     void setSnapEnabled(bool on);
     void setGridStep(double metres);
+    void setAngleStep(double degrees);
 
     void frameSelection();
     void frameAll();
