@@ -1,15 +1,334 @@
-// Placeholder until the batch solve lands: keeps `regio-solve solve` linking
-// and answering honestly.
+// `regio-solve solve`: the batch radiosity solve of one or more scene files,
+// with a progress line on standard error and an optional JSON report.
 #include "solver/cli/commands.h"
+#include "solver/cli/scene_input.h"
 
+#include "solver/report.h"
+#include "solver/solver.h"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace regio::cli {
 
-int runSolve(int, char**)
+namespace {
+
+const char* const kSolveUsage =
+    "Usage: regio-solve solve [OPTIONS] SCENE.json...\n"
+    "\n"
+    "Computes the radiosity solution of each scene by progressive shooting\n"
+    "with the painter's hemicube over regional BSP trees. Settings not given\n"
+    "here come from the scene's own solver settings.\n"
+    "\n"
+    "Options:\n"
+    "  --hemicube N            hemicube resolution (top face N x N), 2..4096\n"
+    "  --iterations N          shoot exactly N times (fewer only if no light is\n"
+    "                          left); the convergence test is off unless\n"
+    "                          --convergence is also given\n"
+    "  --convergence X         stop when unshot / emitted power < X (per channel)\n"
+    "  --visibility MODE       painter (default) or zbuffer\n"
+    "  --regions MODE          authored (default), none (one BSP tree) or auto\n"
+    "  --report FILE.json      write the JSON report there ('-': standard output)\n"
+    "  -q, --quiet             no progress line and no summary\n"
+    "  -h, --help              show this help\n"
+    "\n"
+    "Exit status: 0 every scene was solved, 1 some scene has errors (it is not\n"
+    "solved), 2 some file could not be read or the command line is wrong,\n"
+    "130 interrupted (the report still holds what was done).\n";
+
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void onInterrupt(int) { g_interrupted.store(true); }
+
+struct Options {
+    solver::SolverOptions solver;
+    bool iterationsGiven = false;
+    bool convergenceGiven = false;
+    std::optional<std::string> reportPath;
+    bool quiet = false;
+    std::vector<std::string> files;
+};
+
+int usageError(const std::string& message)
 {
-    std::cerr << "regio-solve solve: the solver is not built yet\n";
+    std::cerr << "regio-solve solve: " << message << "\nTry 'regio-solve solve --help'.\n";
     return kExitFailure;
+}
+
+template <typename T>
+bool parseNumber(const std::string& text, T& value)
+{
+    std::istringstream in(text);
+    in >> value;
+    return in && in.peek() == std::char_traits<char>::eof();
+}
+
+// Parses the command line; returns an exit code when the command must stop here.
+std::optional<int> parseOptions(int argc, char** argv, Options& options)
+{
+    bool optionsEnded = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (optionsEnded || arg == "-" || arg.empty() || arg[0] != '-') {
+            options.files.push_back(arg);
+            continue;
+        }
+        if (arg == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        if (arg == "-h" || arg == "--help") {
+            std::cout << kSolveUsage;
+            return kExitOk;
+        }
+        if (arg == "-q" || arg == "--quiet") {
+            options.quiet = true;
+            continue;
+        }
+        std::string value;
+        const size_t eq = arg.find('=');
+        if (eq != std::string::npos) {
+            value = arg.substr(eq + 1);
+            arg = arg.substr(0, eq);
+        } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" ||
+                   arg == "--visibility" || arg == "--regions" || arg == "--report") {
+            if (i + 1 >= argc)
+                return usageError(arg + " needs a value");
+            value = argv[++i];
+        } else {
+            return usageError("unknown option '" + arg + "'");
+        }
+
+        if (arg == "--hemicube") {
+            int n = 0;
+            if (!parseNumber(value, n) || n < 2 || n > solver::kMaxHemicubeResolution)
+                return usageError("--hemicube expects an integer from 2 to " +
+                                  std::to_string(solver::kMaxHemicubeResolution) + ", not '" + value + "'");
+            options.solver.hemicube = n;
+        } else if (arg == "--iterations") {
+            int n = 0;
+            if (!parseNumber(value, n) || n < 0)
+                return usageError("--iterations expects a non-negative integer, not '" + value + "'");
+            options.solver.maxIterations = n;
+            options.iterationsGiven = true;
+        } else if (arg == "--convergence") {
+            double x = 0.0;
+            if (!parseNumber(value, x) || !(x >= 0.0) || x > 1.0)
+                return usageError("--convergence expects a number from 0 to 1, not '" + value + "'");
+            options.solver.convergence = x;
+            options.convergenceGiven = true;
+        } else if (arg == "--visibility") {
+            if (value == "painter")
+                options.solver.visibility = solver::VisibilityMode::Painter;
+            else if (value == "zbuffer")
+                options.solver.visibility = solver::VisibilityMode::ZBuffer;
+            else
+                return usageError("--visibility expects painter or zbuffer, not '" + value + "'");
+        } else if (arg == "--regions") {
+            if (value == "authored")
+                options.solver.regions = solver::RegionsMode::Authored;
+            else if (value == "none")
+                options.solver.regions = solver::RegionsMode::None;
+            else if (value == "auto")
+                options.solver.regions = solver::RegionsMode::Auto;
+            else
+                return usageError("--regions expects authored, none or auto, not '" + value + "'");
+        } else if (arg == "--report") {
+            if (value.empty())
+                return usageError("--report needs a file name");
+            options.reportPath = value;
+        } else {
+            return usageError("unknown option '" + arg + "'");
+        }
+    }
+    if (options.files.empty())
+        return usageError("no scene file given");
+    // "Exactly N shooting steps": the convergence test only applies when asked for.
+    if (options.iterationsGiven && !options.convergenceGiven)
+        options.solver.convergence = 0.0;
+    return std::nullopt;
+}
+
+std::string displayName(const std::string& name) { return name == "-" ? "<stdin>" : name; }
+
+// The \r-updated progress line, at most four times a second.
+class ProgressLine {
+public:
+    ProgressLine(std::string name, int maxIterations, bool enabled)
+        : m_name(std::move(name)), m_max(maxIterations), m_enabled(enabled), m_start(Clock::now())
+    {
+    }
+    ~ProgressLine() { finish(); }
+
+    void update(const solver::SolverStats& s, bool force = false)
+    {
+        if (!m_enabled)
+            return;
+        const auto now = Clock::now();
+        if (!force && m_shown && now - m_last < std::chrono::milliseconds(250))
+            return;
+        m_last = now;
+        char line[256];
+        std::snprintf(line, sizeof line, "%s: iteration %d/%d, unshot %.3g %% of emitted, %.1f s",
+                      m_name.c_str(), s.iterations, m_max, 100.0 * s.unshotRatio,
+                      std::chrono::duration<double>(now - m_start).count());
+        std::string text = line;
+        const size_t width = text.size();
+        if (text.size() < m_width)
+            text.append(m_width - text.size(), ' ');
+        m_width = width;
+        std::cerr << '\r' << text << std::flush;
+        m_shown = true;
+    }
+    void finish()
+    {
+        if (m_shown)
+            std::cerr << '\n' << std::flush;
+        m_shown = false;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::string m_name;
+    int m_max;
+    bool m_enabled;
+    bool m_shown = false;
+    size_t m_width = 0;
+    Clock::time_point m_start;
+    Clock::time_point m_last;
+};
+
+nlohmann::json unsolvedEntry(const SceneInput& input, const model::Diagnostics& diagnostics, const char* status)
+{
+    nlohmann::json entry;
+    entry["scene"] = input.name;
+    entry["status"] = status;
+    nlohmann::json errors = nlohmann::json::array();
+    for (const model::Diagnostic& d : diagnostics)
+        if (d.isError())
+            errors.push_back(formatDiagnostic(displayName(input.name), d));
+    entry["errors"] = std::move(errors);
+    return entry;
+}
+
+// Writes beside the target and renames over it, so a half-written report
+// never replaces a previous one.
+bool writeReport(const std::string& path, const nlohmann::json& report)
+{
+    const std::string text = report.dump(2) + "\n";
+    if (path == "-") {
+        std::cout << text << std::flush;
+        return true;
+    }
+    const std::string temp = path + ".tmp";
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out << text;
+        out.flush();
+        if (!out) {
+            std::cerr << "regio-solve solve: cannot write the report " << temp << "\n";
+            return false;
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        std::cerr << "regio-solve solve: cannot write the report " << path << ": " << ec.message() << "\n";
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int runSolve(int argc, char** argv)
+{
+    Options options;
+    if (const std::optional<int> code = parseOptions(argc, argv, options))
+        return *code;
+
+    g_interrupted = false;
+    const auto previousHandler = std::signal(SIGINT, onInterrupt);
+    // With the report on standard output, people read everything else on standard error.
+    std::ostream& summary = options.reportPath && *options.reportPath == "-" ? std::cerr : std::cout;
+
+    int exitCode = kExitOk;
+    nlohmann::json reports = nlohmann::json::array();
+    for (const std::string& file : options.files) {
+        if (g_interrupted)
+            break;
+        const auto start = std::chrono::steady_clock::now();
+        const SceneInput input = readSceneInput(file);
+        printDiagnostics(std::cerr, input);
+        const int inputCode = exitCodeOf(input);
+        if (inputCode != kExitOk) {
+            exitCode = std::max(exitCode, inputCode);
+            reports.push_back(unsolvedEntry(input, input.diagnostics,
+                                            inputCode == kExitFailure ? "unreadable" : "invalid"));
+            if (!options.quiet)
+                summary << displayName(file) << ": not solved (the scene has errors)\n";
+            continue;
+        }
+
+        solver::Solver::CreateResult built = solver::Solver::create(*input.scene, options.solver);
+        for (const model::Diagnostic& d : built.diagnostics)
+            std::cerr << formatDiagnostic(displayName(file), d) << "\n";
+        if (!built.solver) {
+            exitCode = std::max(exitCode, kExitErrors);
+            reports.push_back(unsolvedEntry(input, built.diagnostics, "invalid"));
+            if (!options.quiet)
+                summary << displayName(file) << ": not solved (the scene could not be prepared)\n";
+            continue;
+        }
+
+        solver::Solver& s = *built.solver;
+        solver::StopReason stop;
+        {
+            ProgressLine progress(displayName(file), s.settings().maxIterations, !options.quiet);
+            progress.update(s.stats(), true);
+            stop = s.run([&](const solver::SolverStats& stats) { progress.update(stats); }, g_interrupted);
+            progress.update(s.stats(), true);
+        }
+        const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        nlohmann::json report = solver::solveReport(file, s, total);
+        report["status"] = stop == solver::StopReason::Cancelled ? "interrupted" : "solved";
+        reports.push_back(std::move(report));
+
+        if (!options.quiet) {
+            const solver::SolverStats st = s.stats();
+            char line[256];
+            std::snprintf(line, sizeof line,
+                          ": %d iterations (%s), %d patches, %d elements, unshot %.3g %% of emitted, %.2f s",
+                          st.iterations, solver::stopReasonName(stop), st.patches, st.elements,
+                          100.0 * st.unshotRatio, total);
+            summary << displayName(file) << line << "\n";
+        }
+    }
+    std::signal(SIGINT, previousHandler == SIG_ERR ? SIG_DFL : previousHandler);
+
+    if (options.reportPath) {
+        const nlohmann::json out = options.files.size() == 1 && reports.size() == 1 ? reports[0] : reports;
+        if (!writeReport(*options.reportPath, out))
+            exitCode = std::max(exitCode, kExitFailure);
+    }
+    if (g_interrupted) {
+        std::cerr << "regio-solve solve: interrupted\n";
+        return 130;
+    }
+    return exitCode;
 }
 
 } // namespace regio::cli

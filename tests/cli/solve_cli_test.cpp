@@ -1,0 +1,337 @@
+// `regio-solve solve` as a user and a script see it: the real executable, its
+// options, its JSON report, its progress line and its exit status.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct CommandRun {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+std::string quoted(const std::string& arg)
+{
+    std::string out = "'";
+    for (char c : arg)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+class Scratch {
+public:
+    Scratch()
+    {
+        static std::atomic<int> counter{0};
+        m_path = fs::temp_directory_path() /
+                 ("regio-solve-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+        fs::create_directories(m_path);
+    }
+    ~Scratch()
+    {
+        std::error_code ec;
+        fs::remove_all(m_path, ec);
+    }
+    fs::path operator/(const std::string& name) const { return m_path / name; }
+    fs::path write(const std::string& name, const std::string& text) const
+    {
+        std::ofstream(m_path / name, std::ios::binary) << text;
+        return m_path / name;
+    }
+
+private:
+    fs::path m_path;
+};
+
+// Runs `regio-solve solve ARGS...`; `shellSuffix` may add to the command line.
+CommandRun solve(const std::vector<std::string>& args)
+{
+    Scratch scratch;
+    std::string command = quoted(REGIO_SOLVE_EXE) + " solve";
+    for (const std::string& a : args)
+        command += " " + quoted(a);
+    command += " </dev/null >" + quoted((scratch / "out").string()) + " 2>" + quoted((scratch / "err").string());
+    const int status = std::system(command.c_str());
+    CommandRun run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = readText(scratch / "out");
+    run.err = readText(scratch / "err");
+    return run;
+}
+
+const fs::path kScenes = fs::path(REGIO_SOURCE_DIR) / "resources" / "scenes";
+const fs::path kData = REGIO_TEST_DATA;
+
+// Two facing panels: a lamp and a grey receiver, 8 triangles in all.
+const char* const kSmallScene = R"({ "format": "regio-scene", "version": 1,
+  "materials": [ { "id": "lamp", "reflectance": [0, 0, 0], "emission": [10, 8, 6] },
+                 { "id": "grey", "reflectance": [0.5, 0.4, 0.3], "emission": [0, 0, 0] } ],
+  "objects": [ { "id": "light", "parts": [ { "id": "light.panel", "material": "lamp",
+      "vertices": [[0,1,0], [1,1,0], [1,1,1], [0,1,1]],
+      "faces": [ { "id": "light.down", "loop": [0, 1, 2, 3] } ] } ] },
+    { "id": "floor", "parts": [ { "id": "floor.panel", "material": "grey",
+      "vertices": [[0,0,0], [0,0,1], [1,0,1], [1,0,0]],
+      "faces": [ { "id": "floor.up", "loop": [0, 1, 2, 3] } ] } ] } ],
+  "solver": { "hemicube": 50, "patchSize": 0.5, "elementsPerPatch": 1, "maxIterations": 500, "convergence": 0.001 }
+})";
+
+std::set<std::string> faceIdsOfFile(const fs::path& path)
+{
+    const json scene = json::parse(readText(path));
+    std::set<std::string> ids;
+    for (const json& object : scene["objects"])
+        for (const json& part : object["parts"])
+            for (const json& face : part["faces"])
+                ids.insert(face["id"].get<std::string>());
+    return ids;
+}
+
+void expectRgb(const json& value)
+{
+    ASSERT_TRUE(value.is_array());
+    ASSERT_EQ(value.size(), 3u);
+    for (const json& c : value)
+        EXPECT_TRUE(c.is_number());
+}
+
+} // namespace
+
+TEST(SolveCommand, SolvesASampleSceneAndWritesAReportWithEveryRequiredField)
+{
+    Scratch scratch;
+    const fs::path scene = kScenes / "two-lights-room.json";
+    const CommandRun run = solve({"--iterations", "5", "--hemicube", "60", "--report", (scratch / "r.json").string(),
+                                  scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    ASSERT_TRUE(r.is_object());
+    EXPECT_EQ(r["scene"], scene.string());
+    EXPECT_EQ(r["status"], "solved");
+    EXPECT_EQ(r["visibility"], "painter");
+    EXPECT_EQ(r["hemicube"], 60);
+    EXPECT_EQ(r["iterations"], 5);
+    EXPECT_GT(r["patches"].get<int>(), 0);
+    EXPECT_GE(r["elements"].get<int>(), r["patches"].get<int>());
+    for (const char* key : {"preprocess", "shoot", "total"})
+        EXPECT_GE(r["seconds"][key].get<double>(), 0.0) << key;
+    for (const char* key : {"emitted", "absorbed", "unshot", "escaped"})
+        expectRgb(r["energy"][key]);
+    EXPECT_EQ(r["bsp"]["regions"], 3);
+    EXPECT_GT(r["bsp"]["inputFaces"].get<int>(), 0);
+    EXPECT_GE(r["bsp"]["fragments"].get<int>(), r["bsp"]["inputFaces"].get<int>());
+    EXPECT_EQ(r["bsp"]["perRegion"].size(), 3u);
+    // Every face of the file, once, with its area and mean radiosity.
+    std::set<std::string> reported;
+    for (const json& f : r["faces"]) {
+        reported.insert(f["id"].get<std::string>());
+        EXPECT_GE(f["area"].get<double>(), 0.0);
+        expectRgb(f["radiosity"]);
+    }
+    EXPECT_EQ(reported, faceIdsOfFile(scene));
+    EXPECT_EQ(r["faces"].size(), reported.size());
+}
+
+TEST(SolveCommand, EnergyInTheReportBalancesPerChannel)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--iterations", "3", "--report", (scratch / "r.json").string(), scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json e = json::parse(readText(scratch / "r.json"))["energy"];
+    // The lamp: 1 m^2 at (10, 8, 6) W/m^2.
+    EXPECT_NEAR(e["emitted"][0].get<double>(), 10.0, 1e-9);
+    for (int c = 0; c < 3; ++c) {
+        const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
+        EXPECT_NEAR(sum, e["emitted"][c].get<double>(), 1e-6 * e["emitted"][c].get<double>());
+    }
+}
+
+TEST(SolveCommand, OptionsOverrideTheScenesSettingsAndShowInTheReport)
+{
+    Scratch scratch;
+    const fs::path scene = kScenes / "two-lights-room.json";
+    const CommandRun run = solve({"--iterations=2", "--hemicube=41", "--visibility", "zbuffer", "--regions", "none",
+                                  "--quiet", "--report", (scratch / "r.json").string(), scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    EXPECT_EQ(r["visibility"], "zbuffer");
+    EXPECT_EQ(r["regions"], "none");
+    EXPECT_EQ(r["hemicube"], 42); // odd resolutions round up to even
+    EXPECT_EQ(r["iterations"], 2);
+    EXPECT_EQ(r["bsp"]["regions"], 1);
+}
+
+TEST(SolveCommand, IterationsMeansExactlyThatManyShotsWhateverTheScenesConvergenceSetting)
+{
+    Scratch scratch;
+    std::string text = kSmallScene;
+    const std::string loose = "\"convergence\": 0.9";
+    text.replace(text.find("\"convergence\": 0.001"), std::string("\"convergence\": 0.001").size(), loose);
+    const fs::path scene = scratch.write("loose.json", text);
+    // The scene's own setting stops after the first shot (half the lamp)...
+    CommandRun run = solve({"--report", (scratch / "a.json").string(), scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    json r = json::parse(readText(scratch / "a.json"));
+    EXPECT_EQ(r["stop"], "converged");
+    EXPECT_EQ(r["iterations"], 1);
+    // ... but --iterations 3 shoots three times.
+    run = solve({"--iterations", "3", "--report", (scratch / "b.json").string(), scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    r = json::parse(readText(scratch / "b.json"));
+    EXPECT_EQ(r["stop"], "maxIterations");
+    EXPECT_EQ(r["iterations"], 3);
+}
+
+TEST(SolveCommand, ConvergenceStopsTheSolveEarly)
+{
+    Scratch scratch;
+    const fs::path scene = kScenes / "two-lights-room.json";
+    const CommandRun run = solve({"--hemicube", "40", "--convergence", "0.5", "--report",
+                                  (scratch / "r.json").string(), scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    EXPECT_EQ(r["stop"], "converged");
+    EXPECT_LT(r["unshotRatio"].get<double>(), 0.5);
+    EXPECT_LT(r["iterations"].get<int>(), 500);
+}
+
+TEST(SolveCommand, SeveralScenesGiveAnArrayOfReports)
+{
+    Scratch scratch;
+    const fs::path small = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--iterations", "2", "--quiet", "--report", (scratch / "r.json").string(),
+                                  small.string(), (kScenes / "cornell-box.json").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    ASSERT_TRUE(r.is_array());
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_EQ(r[0]["scene"], small.string());
+    EXPECT_EQ(r[1]["scene"], (kScenes / "cornell-box.json").string());
+}
+
+TEST(SolveCommand, ReportDashWritesTheJsonToStandardOutput)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--iterations", "1", "--report", "-", scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(run.out); // nothing else on standard output
+    EXPECT_EQ(r["iterations"], 1);
+}
+
+TEST(SolveCommand, ShowsAProgressLineOnStandardErrorUnlessQuiet)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun loud = solve({"--iterations", "3", scene.string()});
+    ASSERT_EQ(loud.exitCode, 0);
+    EXPECT_NE(loud.err.find('\r'), std::string::npos);
+    EXPECT_NE(loud.err.find("iteration 3/3"), std::string::npos) << loud.err;
+    EXPECT_NE(loud.out.find("3 iterations"), std::string::npos) << loud.out;
+
+    const CommandRun quiet = solve({"--iterations", "3", "--quiet", scene.string()});
+    ASSERT_EQ(quiet.exitCode, 0);
+    EXPECT_EQ(quiet.err, "");
+    EXPECT_EQ(quiet.out, "");
+}
+
+TEST(SolveCommand, RefusesToSolveASceneWithValidationErrorsAndExitsOne)
+{
+    Scratch scratch;
+    const fs::path bad = kData / "invalid" / "non-convex-face.json";
+    const CommandRun run = solve({"--iterations", "1", "--report", (scratch / "r.json").string(), bad.string()});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("not convex"), std::string::npos) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    EXPECT_EQ(r["status"], "invalid");
+    EXPECT_FALSE(r.contains("faces"));
+}
+
+TEST(SolveCommand, AnUnreadableFileExitsTwo)
+{
+    const CommandRun run = solve({"/nonexistent/scene.json"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("/nonexistent/scene.json"), std::string::npos);
+}
+
+TEST(SolveCommand, AMixOfGoodAndBadScenesSolvesTheGoodOnesAndReportsTheWorstExitCode)
+{
+    Scratch scratch;
+    const fs::path small = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--iterations", "1", "--quiet", "--report", (scratch / "r.json").string(),
+                                  (kData / "invalid" / "unknown-material.json").string(), small.string()});
+    EXPECT_EQ(run.exitCode, 1);
+    const json r = json::parse(readText(scratch / "r.json"));
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_EQ(r[0]["status"], "invalid");
+    EXPECT_EQ(r[1]["status"], "solved");
+}
+
+TEST(SolveCommand, BadOptionsAreUsageErrorsThatExitTwo)
+{
+    const std::string scene = (kScenes / "cornell-box.json").string();
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"--hemicube", "1", scene},
+             {"--hemicube", "abc", scene},
+             {"--hemicube", "100000", scene},
+             {"--iterations", "-3", scene},
+             {"--convergence", "nan", scene},
+             {"--visibility", "raytrace", scene},
+             {"--regions", "some", scene},
+             {"--report"},
+             {"--frobnicate", scene},
+             {}}) {
+        const CommandRun run = solve(args);
+        EXPECT_EQ(run.exitCode, 2) << (args.empty() ? "no arguments" : args[0]);
+        EXPECT_NE(run.err.find("regio-solve solve:"), std::string::npos) << run.err;
+    }
+}
+
+TEST(SolveCommand, HelpDescribesEveryOption)
+{
+    const CommandRun run = solve({"--help"});
+    EXPECT_EQ(run.exitCode, 0);
+    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions", "--report",
+                               "--quiet"})
+        EXPECT_NE(run.out.find(option), std::string::npos) << option;
+}
+
+TEST(SolveCommand, InterruptStopsTheSolveAndStillWritesTheReport)
+{
+    Scratch scratch;
+    const fs::path scene = kScenes / "two-lights-room.json";
+    const std::string command = quoted(REGIO_SOLVE_EXE) + " solve --quiet --iterations 1000000 --hemicube 600 --report " +
+                                quoted((scratch / "r.json").string()) + " " + quoted(scene.string()) +
+                                " </dev/null >/dev/null 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo $? > " +
+                                quoted((scratch / "code").string());
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    EXPECT_EQ(readText(scratch / "code"), "130\n");
+    const json r = json::parse(readText(scratch / "r.json"));
+    EXPECT_EQ(r["status"], "interrupted");
+    EXPECT_EQ(r["stop"], "cancelled");
+    EXPECT_LT(r["iterations"].get<int>(), 1000000);
+}
