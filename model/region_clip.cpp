@@ -84,6 +84,42 @@ std::string temporaryId(const Scene& scene, const std::string& base, int& counte
     return id;
 }
 
+// The six planes of box r, normals pointing into it. Faces on the outside
+// of the union of the boxes come first: cutting away what lies outside every
+// region before cutting between neighbours leaves one outside piece instead
+// of one per neighbour.
+std::vector<Plane> cutPlanes(const std::vector<Box3>& boxes, size_t r)
+{
+    const Box3& box = boxes[r];
+    std::vector<Plane> outer, inner;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            const double at = side == 0 ? box.max[axis] : box.min[axis];
+            Vec3 normal{0.0};
+            normal[axis] = side == 0 ? -1.0 : 1.0;
+            // Does another box lie against this face?
+            bool shared = false;
+            for (size_t o = 0; o < boxes.size() && !shared; ++o) {
+                const Box3& other = boxes[o];
+                if (o == r || other.empty)
+                    continue;
+                const double facing = side == 0 ? other.min[axis] : other.max[axis];
+                bool overlaps = std::abs(facing - at) <= kDistanceEpsilon;
+                for (int a = 0; a < 3 && overlaps; ++a)
+                    if (a != axis)
+                        overlaps = other.min[a] < box.max[a] - kDistanceEpsilon &&
+                                   box.min[a] < other.max[a] - kDistanceEpsilon;
+                shared = overlaps;
+            }
+            Vec3 point = box.min;
+            point[axis] = at;
+            (shared ? inner : outer).push_back(Plane::fromPointNormal(point, normal));
+        }
+    }
+    outer.insert(outer.end(), inner.begin(), inner.end());
+    return outer;
+}
+
 struct Piece {
     std::string id;
     int region = -1; // -1: outside every box
@@ -119,7 +155,7 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
                              "' does not straddle a region boundary (it lies inside one region or outside all): "
                              "there is nothing to clip",
                          "", {partId});
-    const CutCaps caps = WingedEdgeMesh::build(*source).isClosed() ? CutCaps::Close : CutCaps::Open;
+    const CutCaps capping = WingedEdgeMesh::build(*source).isClosed() ? CutCaps::Close : CutCaps::Open;
     const std::vector<Box3> boxes = regionBoxes(scene);
     // All or nothing: a refused cut puts back the scene as it was.
     Scene before = scene;
@@ -130,6 +166,7 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
 
     RegionClip clip;
     clip.partId = partId;
+    std::unordered_set<std::string> caps; // current ids of cap faces (and of their pieces)
     int counter = 0;
     std::vector<std::string> pending{partId};
     std::vector<Piece> done;
@@ -145,32 +182,34 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
             // inside goes on, the outside waits for the next boxes.
             std::string current = id;
             bool outside = false;
-            for (int axis = 0; axis < 3 && !outside; ++axis) {
-                for (int side = 0; side < 2 && !outside; ++side) {
-                    Vec3 normal{0.0};
-                    normal[axis] = side == 0 ? 1.0 : -1.0; // pointing out of the box
-                    const Plane plane = Plane::fromPointNormal(side == 0 ? box.max : box.min, normal);
-                    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-                    for (const Vec3& v : usedVertices(*scene.findPart(current))) {
-                        const double s = plane.signedDistance(v);
-                        lowest = std::min(lowest, s);
-                        highest = std::max(highest, s);
-                    }
-                    if (highest <= kDistanceEpsilon)
-                        continue; // inside this face of the box
-                    if (lowest >= -kDistanceEpsilon) {
-                        outside = true; // only touches the box
-                        break;
-                    }
-                    const std::string outsideId = temporaryId(scene, partId, counter);
-                    const std::string insideId = temporaryId(scene, partId, counter); // counter moved on
-                    auto split = splitPartInScene(scene, current, plane, outsideId, insideId, caps);
-                    if (!split)
-                        return refuse(split.error());
-                    clip.splits.push_back(std::move(*split));
-                    next.push_back(outsideId);
-                    current = insideId;
+            for (const Plane& plane : cutPlanes(boxes, r)) {
+                double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+                for (const Vec3& v : usedVertices(*scene.findPart(current))) {
+                    const double s = plane.signedDistance(v);
+                    lowest = std::min(lowest, s);
+                    highest = std::max(highest, s);
                 }
+                if (lowest >= -kDistanceEpsilon)
+                    continue; // inside this face of the box
+                if (highest <= kDistanceEpsilon) {
+                    outside = true; // only touches the box
+                    break;
+                }
+                // The inside is the front: it keeps the part's place in its
+                // object, so the pieces end up in region order.
+                const std::string insideId = temporaryId(scene, partId, counter);
+                const std::string outsideId = temporaryId(scene, partId, counter); // counter moved on
+                auto split = splitPartInScene(scene, current, plane, insideId, outsideId, capping);
+                if (!split)
+                    return refuse(split.error());
+                for (const PlaneCut::FacePieces& pieces : split->pieces)
+                    if (caps.erase(pieces.sourceId))
+                        caps.insert(pieces.pieceIds.begin(), pieces.pieceIds.end());
+                caps.insert(split->frontCaps.begin(), split->frontCaps.end());
+                caps.insert(split->backCaps.begin(), split->backCaps.end());
+                clip.splits.push_back(std::move(*split));
+                next.push_back(outsideId);
+                current = insideId;
             }
             if (outside)
                 next.push_back(current);
@@ -205,6 +244,8 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
                 clip.faceRenames.emplace_back(faceId, newId);
             }
             pieceFaces.insert(newId);
+            if (caps.count(faceId))
+                clip.capFaces.push_back(newId);
         }
     }
 

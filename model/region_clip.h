@@ -49,6 +49,7 @@ struct RegionClip {
     std::vector<std::pair<std::string, std::string>> faceRenames;
     BspOrderSnapshots bspOrders;         // orders before pieces outside their region left them
     std::vector<std::string> pieces;     // the resulting parts, in object order
+    std::vector<std::string> capFaces;   // faces of the pieces made by the cuts (closed parts only)
 
     bool operator==(const RegionClip&) const = default;
 };
