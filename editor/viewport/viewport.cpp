@@ -432,10 +432,12 @@ void Viewport::mousePressEvent(QMouseEvent* event)
             m_drag = Drag::None;
             return;
         }
+        updateGizmo(); // the selection may have changed since the last frame
         const GizmoHandle handle = gizmoVisible() ? m_gizmo.hitTest(view, m_pressPos.x(), m_pressPos.y())
                                                   : GizmoHandle::None;
         if (handle != GizmoHandle::None) {
             m_drag = Drag::Gizmo;
+            m_dragMoved = false;
             m_dragParts = selectedPartIds(m_document->scene(), m_document->selection());
             ++m_dragSerial;
             m_gizmo.beginDrag(handle, view, m_pressPos.x(), m_pressPos.y());
@@ -466,6 +468,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         m_camera.look(-delta.x() * kOrbitDegreesPerPixel * 0.5, -delta.y() * kOrbitDegreesPerPixel * 0.5);
         break;
     case Drag::Gizmo: {
+        if (!m_dragMoved && (pos - m_pressPos).manhattanLength() <= kClickSlopPixels)
+            return; // not a drag yet
+        m_dragMoved = true;
         const glm::dmat4 transform = m_gizmo.dragTo(view, pos.x(), pos.y(), m_snap);
         emit transformDragged(m_dragParts, transform, m_dragSerial);
         emit statusMessage(m_gizmo.dragDescription());
@@ -505,6 +510,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event)
     if (m_drag == Drag::Gizmo) {
         m_gizmo.endDrag();
         emit transformDragFinished();
+        // A click on the gizmo that did not drag still selects what is there.
+        if (event->button() == Qt::LeftButton && !m_dragMoved)
+            selectAt(pos, event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
     }
     if (m_drag == Drag::Look) {
         m_flyTimer.stop();

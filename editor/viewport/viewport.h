@@ -141,6 +141,7 @@ private:
     QPoint m_lastPos;
     std::vector<std::string> m_dragParts;
     int m_dragSerial = 0;
+    bool m_dragMoved = false; // the gizmo drag left the click slop
 
     QSet<int> m_flyKeys;
     QTimer m_flyTimer;

@@ -10,6 +10,7 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QWheelEvent>
 #include <QProcess>
 #include <QSet>
 #include <QSurfaceFormat>
@@ -211,6 +212,55 @@ private slots:
         QVERIFY(solid != wire);
         QVERIFY(solid != normals);
         QVERIFY(wire != normals);
+    }
+
+    void draggingTheMoveGizmoMovesTheSelectionInOneUndoStep()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        const model::Scene before = document->scene();
+        document->setSelection(Selection::single(SelectionKind::Object, "short"));
+        viewport->setGizmoMode(GizmoMode::Move);
+        viewport->setSnapEnabled(false);
+        // The gizmo sits at the selection's centre; grab its y handle a bit
+        // above the centre and drag upwards.
+        const model::Box3 box = boundsOfFaces(document->scene(), selectedFaceIds(document->scene(), document->selection()));
+        const auto centre = viewport->screenView().toPixels(box.center());
+        QVERIFY(centre);
+        const QPoint grab(int(centre->x), int(centre->y) - 40);
+        QTest::mousePress(viewport, Qt::LeftButton, {}, grab);
+        for (int dy = 5; dy <= 60; dy += 5)
+            QTest::mouseMove(viewport, grab - QPoint(0, dy));
+        QTest::mouseRelease(viewport, Qt::LeftButton, {}, grab - QPoint(0, 60));
+        QCOMPARE(document->undoStack()->count(), 1);
+        const double lift = document->scene().findPart("short-block")->vertices[0].y -
+                            before.findPart("short-block")->vertices[0].y;
+        QVERIFY2(lift > 0.01, qPrintable(QString::number(lift)));
+        // Only upwards: x and z stay.
+        QCOMPARE(document->scene().findPart("short-block")->vertices[0].x, before.findPart("short-block")->vertices[0].x);
+        document->undoStack()->undo();
+        QVERIFY(document->scene() == before);
+    }
+
+    void middleDragOrbitsAndTheWheelZooms()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        const double yaw = viewport->camera().yawDegrees();
+        const QPoint centre = viewport->rect().center();
+        QTest::mousePress(viewport, Qt::MiddleButton, {}, centre);
+        QTest::mouseMove(viewport, centre + QPoint(50, 0));
+        QTest::mouseRelease(viewport, Qt::MiddleButton, {}, centre + QPoint(50, 0));
+        QVERIFY(std::abs(viewport->camera().yawDegrees() - yaw) > 5.0);
+
+        const double distance = viewport->camera().distance();
+        QWheelEvent wheel(QPointF(centre), viewport->mapToGlobal(QPointF(centre)), QPoint(), QPoint(0, 120),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(viewport, &wheel);
+        QVERIFY(viewport->camera().distance() < distance);
+        // Nothing of that is an edit.
+        QCOMPARE(window->document()->undoStack()->count(), 0);
     }
 
     void framingTheSelectionCentresIt()
