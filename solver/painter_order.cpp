@@ -1,0 +1,54 @@
+#include "solver/painter_order.h"
+
+#include "solver/hemicube_raster.h"
+#include "solver/traversal.h"
+
+namespace regio::solver {
+
+namespace {
+
+PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shooterPlane)
+{
+    PainterOrder out;
+    forEachNodeBackToFront(
+        scene, eye,
+        [&](int region) {
+            if (shooterPlane && boxBehindPlane(scene.regions[size_t(region)].bounds, *shooterPlane)) {
+                out.culledRegions.push_back(region);
+                return false;
+            }
+            out.regions.push_back(region);
+            return true;
+        },
+        [&](int nodeIndex, bool eyeInFront) {
+            out.nodes.push_back(nodeIndex);
+            const BspNode& node = scene.nodes[size_t(nodeIndex)];
+            const int split = node.firstElement + node.forwardElements;
+            const int end = node.firstElement + node.elementCount;
+            for (int i = node.firstElement; i < end; ++i)
+                out.steps.push_back({i, nodeIndex, node.region, (i < split) == eyeInFront});
+        });
+    return out;
+}
+
+} // namespace
+
+PainterOrder painterOrder(const PreparedScene& scene, const Vec3& eye) { return walk(scene, eye, nullptr); }
+
+PainterOrder painterOrder(const PreparedScene& scene, const Vec3& eye, const Plane& shooterPlane)
+{
+    return walk(scene, eye, &shooterPlane);
+}
+
+PainterOrder painterOrderFromPatch(const PreparedScene& scene, int patch)
+{
+    // The shooter's frame and plane as Shooting::shoot and Visibility build them.
+    const Patch& p = scene.patches[size_t(patch)];
+    const Vec3& a = scene.vertices[size_t(p.vertices[0])];
+    const Vec3& b = scene.vertices[size_t(p.vertices[1])];
+    const ShooterFrame frame =
+        ShooterFrame::make(p.centroid, scene.properties[size_t(p.properties)].plane.normal, b - a);
+    return painterOrder(scene, frame.origin, Plane::fromPointNormal(frame.origin, frame.n));
+}
+
+} // namespace regio::solver
