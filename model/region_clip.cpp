@@ -5,10 +5,12 @@
 #include "model/winged_edge.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <unordered_set>
 
 namespace regio::model {
@@ -74,6 +76,22 @@ bool partTouchesBox(const Part& part, const Box3& box)
     return false;
 }
 
+// Closed with its normals pointing out: a solid, whose pieces get caps. A
+// closed shell facing inwards is a room seen from inside (makeRoom); capping
+// its pieces would build walls across the room at the region boundaries.
+bool isSolid(const Part& part)
+{
+    if (!WingedEdgeMesh::build(part).isClosed())
+        return false;
+    double volume = 0.0; // divergence theorem: sum of (area vector . point) / 3
+    for (const Face& face : part.faces)
+        if (loopValid(part, face)) {
+            const std::vector<Vec3> loop = loopPositions(part.vertices, face.loop);
+            volume += glm::dot(newellNormal(loop), loop.front()) / 6.0;
+        }
+    return volume > 0.0;
+}
+
 // A part id that is not in use, for pieces that get their final name later.
 std::string temporaryId(const Scene& scene, const std::string& base, int& counter)
 {
@@ -84,45 +102,147 @@ std::string temporaryId(const Scene& scene, const std::string& base, int& counte
     return id;
 }
 
-// The six planes of box r, normals pointing into it. Faces on the outside
-// of the union of the boxes come first: cutting away what lies outside every
-// region before cutting between neighbours leaves one outside piece instead
-// of one per neighbour.
-std::vector<Plane> cutPlanes(const std::vector<Box3>& boxes, size_t r)
-{
-    const Box3& box = boxes[r];
-    std::vector<Plane> outer, inner;
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int side = 0; side < 2; ++side) {
-            const double at = side == 0 ? box.max[axis] : box.min[axis];
-            Vec3 normal{0.0};
-            normal[axis] = side == 0 ? -1.0 : 1.0;
-            // Does another box lie against this face?
-            bool shared = false;
-            for (size_t o = 0; o < boxes.size() && !shared; ++o) {
-                const Box3& other = boxes[o];
-                if (o == r || other.empty)
-                    continue;
-                const double facing = side == 0 ? other.min[axis] : other.max[axis];
-                bool overlaps = std::abs(facing - at) <= kDistanceEpsilon;
-                for (int a = 0; a < 3 && overlaps; ++a)
-                    if (a != axis)
-                        overlaps = other.min[a] < box.max[a] - kDistanceEpsilon &&
-                                   box.min[a] < other.max[a] - kDistanceEpsilon;
-                shared = overlaps;
-            }
-            Vec3 point = box.min;
-            point[axis] = at;
-            (shared ? inner : outer).push_back(Plane::fromPointNormal(point, normal));
-        }
-    }
-    outer.insert(outer.end(), inner.begin(), inner.end());
-    return outer;
-}
-
 struct Piece {
     std::string id;
     int region = -1; // -1: outside every box
+};
+
+// Extreme signed distances of the part's vertices from a plane.
+std::pair<double, double> sideRange(const Part& part, const Plane& plane)
+{
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+    for (const Vec3& v : usedVertices(part)) {
+        const double s = plane.signedDistance(v);
+        lowest = std::min(lowest, s);
+        highest = std::max(highest, s);
+    }
+    return {lowest, highest};
+}
+
+// An axis-aligned plane with every box of `group` on one side (touching
+// allowed), found on the limit lists as the regional tree finds it (§5.2).
+std::optional<std::pair<int, double>> separatingPlane(const std::vector<Box3>& boxes, std::vector<int> group)
+{
+    for (int axis = 0; axis < 3; ++axis) {
+        std::sort(group.begin(), group.end(),
+                  [&](int a, int b) { return boxes[size_t(a)].min[axis] < boxes[size_t(b)].min[axis]; });
+        double reach = -std::numeric_limits<double>::infinity();
+        for (size_t i = 0; i + 1 < group.size(); ++i) {
+            reach = std::max(reach, boxes[size_t(group[i])].max[axis]);
+            if (reach <= boxes[size_t(group[i + 1])].min[axis] + kDistanceEpsilon)
+                return std::pair{axis, reach};
+        }
+    }
+    return std::nullopt;
+}
+
+// Cuts a piece down the tree of separating planes between the boxes, so it
+// falls apart into one piece per region cell it reaches, then cuts away what
+// sticks out of the cell's box (that lies outside every region).
+struct Clipper {
+    Scene& scene;
+    const std::vector<Box3>& boxes;
+    const std::string& partId;
+    CutCaps capping;
+    RegionClip& record;
+    std::vector<Piece> done;
+    std::unordered_set<std::string> caps; // current ids of cap faces (and of their pieces)
+    int counter = 0;
+
+    // Cuts `current` by `plane`; the front piece (kept at the part's place
+    // in its object) and the back piece come back.
+    std::optional<Diagnostic> cut(const std::string& current, const Plane& plane, std::string& front,
+                                  std::string& back)
+    {
+        front = temporaryId(scene, partId, counter);
+        back = temporaryId(scene, partId, counter); // the counter moved on
+        auto split = splitPartInScene(scene, current, plane, front, back, capping);
+        if (!split)
+            return split.error();
+        for (const PlaneCut::FacePieces& pieces : split->pieces)
+            if (caps.erase(pieces.sourceId))
+                caps.insert(pieces.pieceIds.begin(), pieces.pieceIds.end());
+        caps.insert(split->frontCaps.begin(), split->frontCaps.end());
+        caps.insert(split->backCaps.begin(), split->backCaps.end());
+        record.splits.push_back(std::move(*split));
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> clip(std::string piece, const std::vector<int>& group)
+    {
+        if (group.empty()) {
+            done.push_back({piece, -1});
+            return std::nullopt;
+        }
+        // What sticks out of the group's bounds lies outside every region
+        // (the piece is already inside the group's cell): cut it away first,
+        // so it stays one piece instead of one per region below.
+        Box3 bounds;
+        for (int r : group)
+            bounds.extend(boxes[size_t(r)]);
+        bool inside = true;
+        if (auto error = trim(piece, bounds, inside))
+            return error;
+        if (!inside || (group.size() == 1 && !partTouchesBox(*scene.findPart(piece), bounds))) {
+            done.push_back({piece, -1});
+            return std::nullopt;
+        }
+        if (group.size() == 1) {
+            done.push_back({piece, group.front()});
+            return std::nullopt;
+        }
+
+        const auto plane = separatingPlane(boxes, group);
+        if (!plane)
+            return makeError("the regions overlap or interlock, so no plane separates them; fix the regions first",
+                             "", {partId});
+        const auto [axis, position] = *plane;
+        std::vector<int> low, high;
+        for (int r : group)
+            (boxes[size_t(r)].max[axis] <= position + kDistanceEpsilon ? low : high).push_back(r);
+        Vec3 normal{0.0};
+        normal[axis] = -1.0; // front = the low side, which keeps the part's place
+        Vec3 point{0.0};
+        point[axis] = position;
+        const Plane separating = Plane::fromPointNormal(point, normal);
+        const auto [lowest, highest] = sideRange(*scene.findPart(piece), separating);
+        if (lowest >= -kDistanceEpsilon)
+            return clip(piece, low);
+        if (highest <= kDistanceEpsilon)
+            return clip(piece, high);
+        std::string lowPiece, highPiece;
+        if (auto error = cut(piece, separating, lowPiece, highPiece))
+            return error;
+        if (auto error = clip(lowPiece, low))
+            return error;
+        return clip(highPiece, high);
+    }
+
+    // Cuts away the parts of `current` outside `box` (each an outside piece);
+    // `inside` turns false when nothing of it is inside.
+    std::optional<Diagnostic> trim(std::string& current, const Box3& box, bool& inside)
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int side = 0; side < 2; ++side) {
+                Vec3 normal{0.0};
+                normal[axis] = side == 0 ? -1.0 : 1.0; // pointing into the box
+                const Plane plane = Plane::fromPointNormal(side == 0 ? box.max : box.min, normal);
+                const auto [lowest, highest] = sideRange(*scene.findPart(current), plane);
+                if (lowest >= -kDistanceEpsilon)
+                    continue; // inside this face of the box
+                if (highest <= kDistanceEpsilon) {
+                    inside = false; // at most touches the box
+                    return std::nullopt;
+                }
+                std::string kept, outside;
+                if (auto error = cut(current, plane, kept, outside))
+                    return error;
+                done.push_back({outside, -1});
+                current = kept;
+            }
+        }
+        return std::nullopt;
+    }
 };
 
 } // namespace
@@ -155,7 +275,7 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
                              "' does not straddle a region boundary (it lies inside one region or outside all): "
                              "there is nothing to clip",
                          "", {partId});
-    const CutCaps capping = WingedEdgeMesh::build(*source).isClosed() ? CutCaps::Close : CutCaps::Open;
+    const CutCaps capping = isSolid(*source) ? CutCaps::Close : CutCaps::Open;
     const std::vector<Box3> boxes = regionBoxes(scene);
     // All or nothing: a refused cut puts back the scene as it was.
     Scene before = scene;
@@ -166,62 +286,17 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
 
     RegionClip clip;
     clip.partId = partId;
-    std::unordered_set<std::string> caps; // current ids of cap faces (and of their pieces)
-    int counter = 0;
-    std::vector<std::string> pending{partId};
-    std::vector<Piece> done;
-    for (size_t r = 0; r < boxes.size(); ++r) {
-        const Box3& box = boxes[r];
-        std::vector<std::string> next;
-        for (const std::string& id : pending) {
-            if (!partTouchesBox(*scene.findPart(id), box)) {
-                next.push_back(id);
-                continue;
-            }
-            // Cut by every plane of the box that crosses the piece; the
-            // inside goes on, the outside waits for the next boxes.
-            std::string current = id;
-            bool outside = false;
-            for (const Plane& plane : cutPlanes(boxes, r)) {
-                double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-                for (const Vec3& v : usedVertices(*scene.findPart(current))) {
-                    const double s = plane.signedDistance(v);
-                    lowest = std::min(lowest, s);
-                    highest = std::max(highest, s);
-                }
-                if (lowest >= -kDistanceEpsilon)
-                    continue; // inside this face of the box
-                if (highest <= kDistanceEpsilon) {
-                    outside = true; // only touches the box
-                    break;
-                }
-                // The inside is the front: it keeps the part's place in its
-                // object, so the pieces end up in region order.
-                const std::string insideId = temporaryId(scene, partId, counter);
-                const std::string outsideId = temporaryId(scene, partId, counter); // counter moved on
-                auto split = splitPartInScene(scene, current, plane, insideId, outsideId, capping);
-                if (!split)
-                    return refuse(split.error());
-                for (const PlaneCut::FacePieces& pieces : split->pieces)
-                    if (caps.erase(pieces.sourceId))
-                        caps.insert(pieces.pieceIds.begin(), pieces.pieceIds.end());
-                caps.insert(split->frontCaps.begin(), split->frontCaps.end());
-                caps.insert(split->backCaps.begin(), split->backCaps.end());
-                clip.splits.push_back(std::move(*split));
-                next.push_back(outsideId);
-                current = insideId;
-            }
-            if (outside)
-                next.push_back(current);
-            else
-                done.push_back({current, int(r)});
-        }
-        pending = std::move(next);
-    }
-    for (const std::string& id : pending)
-        done.push_back({id, -1});
+    Clipper clipper{scene, boxes, partId, capping, clip};
+    std::vector<int> all;
+    for (size_t r = 0; r < boxes.size(); ++r)
+        if (!boxes[r].empty)
+            all.push_back(int(r));
+    if (auto error = clipper.clip(partId, all))
+        return refuse(*error);
     if (clip.splits.empty())
         return refuse(makeError("no region plane crosses part '" + partId + "' far enough to cut it", "", {partId}));
+    const std::vector<Piece>& done = clipper.done;
+    const std::unordered_set<std::string>& caps = clipper.caps;
 
     // Final names after the regions.
     std::unordered_set<std::string> pieceFaces;

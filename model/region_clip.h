@@ -7,11 +7,16 @@
 // modelling intends ("we can split each object into several logical parts and
 // even cut it into small pieces", §3).
 //
-// The part is cut with the plane cut (splitPartInScene) along the planes of
-// the boxes it reaches: for each region box in scene order, the piece that
-// reaches into the box is cut by those of the box's six planes that cross it,
-// keeping the inside piece and passing the outside ones on to the next boxes.
-// Closed parts get caps (CutCaps::Close), open ones (walls) stay open. The
+// The part is cut with the plane cut (splitPartInScene) down the tree of
+// planes that separate the region boxes (found on limit lists, as the
+// solver's regional tree finds its planes, §5.2): at each level what sticks
+// out of the bounds of the level's boxes is cut away first (it lies outside
+// every region), then the piece is cut by the separating plane if it crosses
+// it. So a part inside the union of the boxes falls into exactly one piece
+// per region it reaches, whatever the layout of the boxes.
+// Solids (closed, normals out) get caps (CutCaps::Close); open parts (walls)
+// and closed shells facing inwards (a room, makeRoom) stay open: capping a
+// room would build walls across it at the region boundaries. The
 // final pieces are named after their region: "table" clipped to regions
 // "middle" and "east" becomes parts "table-middle" and "table-east" with faces
 // "table-middle.top", ...; a piece outside every box is "table-outside". BSP

@@ -166,6 +166,47 @@ TEST(RegionClip, LeavesOpenPartsOpenAndCutsThemAtEveryBoundary)
     EXPECT_EQ(scene, before);
 }
 
+TEST(RegionClip, NeverCapsARoomSoNoWallAppearsAcrossIt)
+{
+    // makeRoom is closed but faces inwards: its pieces stay open.
+    Scene scene;
+    scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
+    scene.objects.push_back({"room", "", {*makeRoom("room.shell", {0, 0, 0}, {4, 2, 2}, "white")}});
+    scene.regions = {box("left", {0, 0, 0}, {2, 2, 2}), box("right", {2, 0, 0}, {4, 2, 2})};
+    const Scene before = scene;
+    const double area = surfaceArea(scene, {"room.shell"});
+    auto clip = clipPartToRegions(scene, "room.shell");
+    ASSERT_TRUE(clip);
+    EXPECT_EQ(clip->pieces, (std::vector<std::string>{"room.shell-left", "room.shell-right"}));
+    EXPECT_TRUE(clip->capFaces.empty());
+    for (const std::string& id : clip->pieces)
+        EXPECT_EQ(scene.findPart(id)->faces.size(), 5u) << id << ": floor, ceiling, two long walls, one end";
+    EXPECT_NEAR(surfaceArea(scene, clip->pieces), area, 1e-12);
+    EXPECT_TRUE(straddleWarnings(scene).empty());
+    ASSERT_TRUE(unclipPart(scene, *clip));
+    EXPECT_EQ(scene, before);
+}
+
+TEST(RegionClip, GivesOnePiecePerRegionOfATiling)
+{
+    // A 3 x 2 x 2 grid of regions over a room: the shell falls into twelve
+    // pieces, one per region, cut along the planes between the regions.
+    Scene scene;
+    scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
+    scene.objects.push_back({"room", "", {*makeRoom("room.shell", {0, 0, 0}, {6, 2, 4}, "white")}});
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k)
+                scene.regions.push_back(box("r" + std::to_string(i) + std::to_string(j) + std::to_string(k),
+                                            {2.0 * i, 1.0 * j, 2.0 * k}, {2.0 * i + 2, 1.0 * j + 1, 2.0 * k + 2}));
+    const double area = surfaceArea(scene, {"room.shell"});
+    auto clip = clipPartToRegions(scene, "room.shell");
+    ASSERT_TRUE(clip);
+    EXPECT_EQ(clip->pieces.size(), 12u);
+    EXPECT_NEAR(surfaceArea(scene, clip->pieces), area, 1e-9);
+    EXPECT_TRUE(straddleWarnings(scene).empty());
+}
+
 TEST(RegionClip, PutsWhatLiesOutsideEveryRegionInAnOutsidePiece)
 {
     Scene scene = twoRegions();
