@@ -5,6 +5,8 @@
 #include "furnished_room.h"
 #include "model/edit_regions.h"
 #include "model/scene_json.h"
+#include "solver/report.h"
+#include "solver/solver.h"
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,37 @@ TEST(BspFigures, EqualTheFiguresOfAFullPreparationInEveryRegionMode)
         for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto}) {
             SCOPED_TRACE(int(mode));
             expectSameFigures(figuresOk(scene, mode), fullPreparationFigures(scene, mode));
+        }
+}
+
+TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)
+{
+    // `regio-solve solve --report` writes solveReport() of the solver it ran.
+    for (const model::Scene& scene : {sampleScene("two-lights-room.json"), test_scenes::furnishedRoom(4, 30)})
+        for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto}) {
+            SCOPED_TRACE(regionsModeName(mode));
+            SolverOptions options;
+            options.regions = mode;
+            Solver::CreateResult built = Solver::create(scene, options);
+            ASSERT_TRUE(built.solver);
+            const nlohmann::json bsp = solveReport("scene", *built.solver)["bsp"];
+            const SceneBspFigures figures = figuresOk(scene, mode);
+            EXPECT_EQ(bsp["regions"].get<size_t>(), figures.regions.size());
+            EXPECT_EQ(bsp["inputFaces"].get<int>(), figures.inputFaces);
+            EXPECT_EQ(bsp["regionPieces"].get<int>(), figures.regionPieces);
+            EXPECT_EQ(bsp["fragments"].get<int>(), figures.fragments);
+            EXPECT_EQ(bsp["splits"].get<int>(), figures.splits);
+            EXPECT_EQ(bsp["maxDepth"].get<int>(), figures.maxDepth);
+            ASSERT_EQ(bsp["perRegion"].size(), figures.regions.size());
+            for (size_t r = 0; r < figures.regions.size(); ++r) {
+                const nlohmann::json& region = bsp["perRegion"][r];
+                const BspFigures& f = figures.regions[r].figures;
+                EXPECT_EQ(region["id"].get<std::string>(), figures.regions[r].id);
+                EXPECT_EQ((BspFigures{region["inputFaces"].get<int>(), region["fragments"].get<int>(),
+                                      region["splits"].get<int>(), region["depth"].get<int>(),
+                                      region["nodes"].get<int>()}),
+                          f);
+            }
         }
 }
 
