@@ -17,6 +17,8 @@ constexpr int kMaxDepth = 32;
 // A gap narrower than this is two parts touching: a plane there would lie on
 // faces of both and file them by their normals, across each other's regions.
 constexpr double kMinGap = 4.0 * model::kDistanceEpsilon;
+// Half the thickness given to a scene that is flat along an axis (metres).
+constexpr double kMinThickness = 1e-3;
 
 struct Item {
     Box3 box;             // of the part's non-shell faces
@@ -269,8 +271,16 @@ RegionProposal proposeRegions(const model::Scene& scene, const RegionProposalOpt
             items.push_back(item);
     }
 
+    // A flat scene (one floor panel) still needs boxes with a thickness:
+    // a region's min must lie below its max on every axis.
+    Box3 space = bounds;
+    for (int axis = 0; axis < 3; ++axis)
+        if (space.max[axis] - space.min[axis] <= kMinThickness) {
+            space.min[axis] -= kMinThickness;
+            space.max[axis] += kMinThickness;
+        }
     std::vector<Box3> boxes;
-    Proposer(std::move(shell), options, patchSize).split(bounds, std::move(items), 0, boxes);
+    Proposer(std::move(shell), options, patchSize).split(space, std::move(items), 0, boxes);
 
     model::Scene proposed = withRegions(scene, {});
     for (size_t i = 0; i < boxes.size(); ++i) {

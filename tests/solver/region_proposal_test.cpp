@@ -212,6 +212,23 @@ TEST(RegionProposal, KeepsASmallSceneInOneRegion)
     EXPECT_TRUE(split.straddlingParts.empty());
 }
 
+TEST(RegionProposal, GivesAFlatSceneRegionsWithAThickness)
+{
+    model::Scene scene;
+    scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
+    model::Part floor;
+    floor.id = "floor.panel";
+    floor.material = "white";
+    floor.vertices = {{0, 0, 0}, {0, 0, 2}, {3, 0, 2}, {3, 0, 0}};
+    floor.faces = {{"floor.panel.top", {0, 1, 2, 3}, ""}};
+    scene.objects.push_back({"floor", "", {floor}});
+    const RegionProposal proposal = proposeRegions(scene);
+    ASSERT_EQ(proposal.regions.size(), 1u);
+    EXPECT_LT(proposal.regions[0].min.y, 0.0);
+    EXPECT_GT(proposal.regions[0].max.y, 0.0);
+    EXPECT_FALSE(model::hasErrors(model::validateScene(withRegions(scene, proposal.regions))));
+}
+
 TEST(RegionProposal, SplitsAlongTheOnlyAxisThatHasAGap)
 {
     // Two slabs overlapping in x and y; only z separates them (0.2 .. 0.3).
