@@ -196,9 +196,10 @@ TEST(RegionClip, GivesOnePiecePerRegionOfATiling)
     scene.objects.push_back({"room", "", {*makeRoom("room.shell", {0, 0, 0}, {6, 2, 4}, "white")}});
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 2; ++j)
-            for (int k = 0; k < 2; ++k)
-                scene.regions.push_back(box("r" + std::to_string(i) + std::to_string(j) + std::to_string(k),
-                                            {2.0 * i, 1.0 * j, 2.0 * k}, {2.0 * i + 2, 1.0 * j + 1, 2.0 * k + 2}));
+            for (int k = 0; k < 2; ++k) {
+                const std::string id{'r', char('0' + i), char('0' + j), char('0' + k)};
+                scene.regions.push_back(box(id, {2.0 * i, 1.0 * j, 2.0 * k}, {2.0 * i + 2, 1.0 * j + 1, 2.0 * k + 2}));
+            }
     const double area = surfaceArea(scene, {"room.shell"});
     auto clip = clipPartToRegions(scene, "room.shell");
     ASSERT_TRUE(clip);
@@ -272,8 +273,9 @@ TEST(RegionClip, RefusesPartsThatDoNotStraddleAndLeavesTheSceneUnchanged)
     for (const char* id : {"crate.body", "far.body", "no.such.part"}) {
         auto clip = clipPartToRegions(scene, id);
         EXPECT_FALSE(clip) << id;
-        if (!clip)
+        if (!clip) {
             EXPECT_NE(clip.error().message.find(id), std::string::npos) << clip.error().message;
+        }
         EXPECT_EQ(scene, before) << id;
     }
     EXPECT_FALSE(partStraddlesRegions(scene, *scene.findPart("crate.body")));

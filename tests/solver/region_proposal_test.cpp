@@ -124,8 +124,9 @@ TEST(RegionProposal, WithGapsOnlyPlacesItsPlanesBetweenPartsSoOnlyTheRoomShellIs
     const model::Scene proposed = withRegions(scene, proposal.regions);
     for (const model::Object& object : proposed.objects)
         for (const model::Part& part : object.parts)
-            if (part.id != "room.shell")
+            if (part.id != "room.shell") {
                 EXPECT_FALSE(model::partStraddlesRegions(proposed, part)) << part.id;
+            }
 }
 
 TEST(RegionProposal, GivesAValidSceneWhoseOnlyWarningsAreTheCutPartsAndClippingThemClearsThem)
@@ -145,8 +146,9 @@ TEST(RegionProposal, GivesAValidSceneWhoseOnlyWarningsAreTheCutPartsAndClippingT
     for (const std::string& part : proposal.straddlingParts) {
         auto clip = model::clipPartToRegions(proposed, part);
         ASSERT_TRUE(clip) << part << ": " << clip.error().message;
-        if (part == "room.shell")
+        if (part == "room.shell") {
             EXPECT_EQ(clip->pieces.size(), proposal.regions.size()) << "one piece of the shell per region";
+        }
     }
     // Left: no errors, no straddling part. The room's pieces are open shells
     // now (validation warns about open parts that are not flat panels).
@@ -154,8 +156,9 @@ TEST(RegionProposal, GivesAValidSceneWhoseOnlyWarningsAreTheCutPartsAndClippingT
         EXPECT_FALSE(d.isError()) << d.pointer << ": " << d.message;
         EXPECT_EQ(d.message.find("straddles"), std::string::npos) << d.message;
         EXPECT_EQ(d.message.find("outside every region"), std::string::npos) << d.message;
-        if (d.message.find("open shell") != std::string::npos)
+        if (d.message.find("open shell") != std::string::npos) {
             EXPECT_NE(d.message.find("room.shell-"), std::string::npos) << d.message;
+        }
     }
 }
 
@@ -360,8 +363,9 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
         EXPECT_LT(proposal.figures->fragments, single.fragments);
         // The sample is small enough for one tree with a good order to split
         // nothing; there regions only add the pieces of the clipped panels.
-        if (c.scene.regions.empty())
+        if (c.scene.regions.empty()) {
             EXPECT_LT(proposal.figures->fragments, singleSuggested.fragments);
+        }
         EXPECT_LE(proposal.figures->fragments, proposalSceneOrder.fragments);
 
         model::Scene clipped = withRegions(c.scene, proposal.regions);
@@ -387,7 +391,8 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
             figuresOk(withSuggestedOrders(withRegions(c.scene, autoRegions)), RegionsMode::Authored);
         row("automatic (patch count), suggested orders", automaticSuggested);
         EXPECT_LE(automaticSuggested.fragments, automatic.fragments);
-        if (c.scene.regions.empty()) // the sample is too small: clipping at 7 boxes adds more than it saves
+        if (c.scene.regions.empty()) { // the sample is too small: clipping at 7 boxes adds more than it saves
             EXPECT_LT(automatic.fragments, single.fragments);
+        }
     }
 }
