@@ -3,12 +3,14 @@
 #include "solver/vertex_radiosity.h"
 
 #include "solver/prepare.h"
+#include "furnished_room.h"
 #include "solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -88,7 +90,9 @@ int hangingVertices(const LitMesh& m)
         const glm::dvec3 a = m.positions[edge.first], b = m.positions[edge.second];
         const glm::dvec3 d = b - a;
         for (size_t v = 0; v < m.vertexCount(); ++v) {
-            if (v == edge.first || v == edge.second || glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.normals[edge.first])) < 0.999)
+            if (v == edge.first || v == edge.second
+                || glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.normals[edge.first])) < 0.999
+                || m.reflectance[v] != m.reflectance[edge.first])
                 continue;
             const glm::dvec3 p = m.positions[v];
             const double t = glm::dot(p - a, d) / glm::dot(d, d);
@@ -366,4 +370,27 @@ TEST(VertexRadiosity, WrongValueCountIsRefused)
     const PreparedScene prepared = tJunctionFloor();
     const std::vector<Rgb> values(prepared.elements.size() + 1, Rgb(2.0));
     EXPECT_THROW(smoothLitMesh(prepared, values), std::invalid_argument);
+}
+
+TEST(VertexRadiosity, FurnishedRoomOutputIsTVertexFreeAndKeepsItsArea)
+{
+    // Furniture planes split the floor, walls and each other into fragments
+    // meshed independently: T-vertices everywhere in the element mesh.
+    const PreparedScene prepared = prepare(test_scenes::furnishedRoom(7, 20), 0.5);
+    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
+    const auto start = std::chrono::steady_clock::now();
+    const LitMesh mesh = smoothLitMesh(prepared, values);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RecordProperty("elements", static_cast<int>(prepared.elements.size()));
+    RecordProperty("triangles", static_cast<int>(mesh.triangleCount()));
+    RecordProperty("milliseconds", static_cast<int>(seconds * 1000.0));
+    EXPECT_FALSE(checkLitMesh(mesh).has_value());
+    EXPECT_GE(mesh.triangleCount(), prepared.elements.size());
+    for (const auto& [edge, uses] : edgeUses(mesh))
+        EXPECT_LE(uses, 2);
+    EXPECT_EQ(hangingVertices(mesh), 0);
+    double area = 0.0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        area += triangleArea(mesh, t);
+    EXPECT_NEAR(area, prepared.stats.area, 1e-6 * prepared.stats.area);
 }
