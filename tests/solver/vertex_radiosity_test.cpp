@@ -266,6 +266,22 @@ TEST(VertexRadiosity, MaterialBoundaryKeepsBothValues)
     EXPECT_EQ(onSeamLow, onSeamHigh);
 }
 
+TEST(VertexRadiosity, LampSetIntoACeilingOfEqualReflectanceKeepsItsBorder)
+{
+    model::Scene scene;
+    addMaterial(scene, "white", {0.7, 0.7, 0.7});
+    addMaterial(scene, "lamp", {0.7, 0.7, 0.7}, {20.0, 20.0, 20.0});
+    addFloor(scene, "ceiling", 0, 1, 0, 1, "white");
+    addFloor(scene, "lamp", 1, 2, 0, 1, "lamp");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const int ceiling = faceIndex(prepared, "ceiling.face");
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
+        return Rgb(e.properties == ceiling ? 1.0 : 20.0);
+    }));
+    for (const glm::vec3& r : mesh.radiosity)
+        EXPECT_TRUE(r.x == 1.0f || r.x == 20.0f) << r.x;
+}
+
 TEST(VertexRadiosity, TouchingFacesOfOnePlaneAndMaterialShareTheirSeam)
 {
     model::Scene scene;
