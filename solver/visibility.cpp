@@ -131,15 +131,16 @@ void Visibility::depthTestElement(int element, ItemId id, ItemBuffer& buffer)
         const double slope = nf.x * scale;
         ItemId* ids = buffer.face(f) + row * n;
         float* depth = buffer.depth(f) + row * n;
+        const double first = base + slope * (0.5 * pixel - 1.0); // depth at column 0
+        const double step = slope * pixel;
+        // Branch-free so that the compiler can vectorise the span.
         for (int x = x0; x < x1; ++x) {
-            const double sx = (x + 0.5) * pixel - 1.0;
             // A covered pixel whose centre ray grazes past the plane (snapping
             // at the horizon) still belongs to the element: never below "far".
-            const float inv = std::max(static_cast<float>(base + slope * sx), std::numeric_limits<float>::min());
-            if (inv > depth[x]) {
-                depth[x] = inv;
-                ids[x] = id;
-            }
+            const float inv = std::max(static_cast<float>(first + step * x), std::numeric_limits<float>::min());
+            const bool nearer = inv > depth[x];
+            depth[x] = nearer ? inv : depth[x];
+            ids[x] = nearer ? id : ids[x];
         }
     });
 }

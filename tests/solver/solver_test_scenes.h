@@ -131,6 +131,59 @@ inline Scene randomRegionScene(unsigned seed, int cols = 2, int rows = 2)
     return scene;
 }
 
+// A room of 2 x 2 cells of 3 m, authored as one region per cell: the floor,
+// ceiling and outer walls are cut at the cell borders, and one box of 1 m
+// height stands in each cell, placed so that no box's planes cut another
+// box (their x and z ranges are disjoint). The BSP orders list the room's
+// faces, then the lamp; the boxes follow unlisted. So one BSP tree over
+// everything and four regional trees split no face differently: the meshes
+// are the same in both modes.
+inline Scene conformingRegionScene()
+{
+    Scene scene;
+    addMaterial(scene, "wall", {0.7, 0.65, 0.6});
+    addMaterial(scene, "red", {0.6, 0.2, 0.15});
+    addMaterial(scene, "blue", {0.15, 0.25, 0.6});
+    addMaterial(scene, "lamp", {0.5, 0.5, 0.5}, {30.0, 28.0, 24.0});
+    const double h = 2.5;
+    // Boxes (x0, x1, z0, z1), pairwise disjoint in x and in z.
+    const double boxes[4][4] = {{0.8, 1.8, 0.8, 1.8}, {2.0, 2.6, 3.3, 3.8}, {5.3, 5.8, 2.0, 2.6}, {3.9, 5.1, 4.0, 5.0}};
+    for (int c = 0; c < 2; ++c)
+        for (int r = 0; r < 2; ++r) {
+            const std::string cell = std::to_string(c) + std::to_string(r);
+            const double x0 = 3.0 * c, x1 = x0 + 3.0, z0 = 3.0 * r, z1 = z0 + 3.0;
+            std::vector<std::string> order;
+            auto quad = [&](const std::string& id, std::vector<Vec3> corners) {
+                addPolygon(scene, id, corners, "wall");
+                order.push_back(id + ".face");
+            };
+            quad("floor" + cell, {{x0, 0, z0}, {x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}});
+            quad("ceiling" + cell, {{x0, h, z0}, {x1, h, z0}, {x1, h, z1}, {x0, h, z1}});
+            if (c == 0)
+                quad("west" + cell, {{0, 0, z0}, {0, h, z0}, {0, h, z1}, {0, 0, z1}});
+            else
+                quad("east" + cell, {{6, 0, z0}, {6, 0, z1}, {6, h, z1}, {6, h, z0}});
+            if (r == 0)
+                quad("south" + cell, {{x0, 0, 0}, {x1, 0, 0}, {x1, h, 0}, {x0, h, 0}});
+            else
+                quad("north" + cell, {{x0, 0, 6}, {x0, h, 6}, {x1, h, 6}, {x1, 0, 6}});
+            if (c == 1 && r == 1) {
+                // Listed after every room face of every cell (this is the last
+                // region), so that its plane cuts no wall in the single tree either.
+                const double ly = h - 0.05;
+                addPolygon(scene, "lamp", {{4.0, ly, 4.0}, {5.0, ly, 4.0}, {5.0, ly, 5.0}, {4.0, ly, 5.0}}, "lamp");
+                order.push_back("lamp.face");
+            }
+            const double* b = boxes[2 * c + r];
+            const std::string box = "box" + cell;
+            addBox(scene, box, {b[0], 0.0, b[2]}, {b[1], 1.0, b[3]}, (c + r) % 2 ? "red" : "blue");
+            addRegion(scene, "cell" + cell, {x0, -0.01, z0}, {x1, h + 0.01, z1}, order);
+        }
+    scene.solver.patchSize = 0.5;
+    scene.solver.elementsPerPatch = 4;
+    return scene;
+}
+
 inline model::Scene loadSample(const std::string& name)
 {
     model::SceneReadResult r = model::loadSceneFile(std::string(REGIO_SOURCE_DIR) + "/resources/scenes/" + name);
