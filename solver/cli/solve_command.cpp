@@ -3,13 +3,16 @@
 #include "solver/cli/commands.h"
 #include "solver/cli/scene_input.h"
 
+#include "solver/export.h"
 #include "solver/report.h"
 #include "solver/solver.h"
+#include "solver/vertex_radiosity.h"
 
 #include <nlohmann/json.hpp>
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +43,19 @@ const char* const kSolveUsage =
     "  --visibility MODE       painter (default) or zbuffer\n"
     "  --regions MODE          authored (default), none (one BSP tree) or auto\n"
     "  --report FILE.json      write the JSON report there ('-': standard output)\n"
+    "\n"
+    "Output of the lit model (one scene only):\n"
+    "  --out FILE              the lit model: .gltf (+ .bin), .glb, .ply or .obj\n"
+    "  --image FILE.png        a Gouraud-shaded picture from the scene's camera\n"
+    "                          (a view of the whole model when it has none)\n"
+    "  --size WxH              picture size in pixels (default 1024x768)\n"
+    "  --exposure STOPS        display exposure, +1 doubles (default 0)\n"
+    "  --gamma G               display gamma (default 2.2)\n"
+    "  --srgb                  encode with the sRGB curve instead of a gamma\n"
+    "  --false-colour SCALE    luminance in false colour, log or linear, with a legend\n"
+    "  --ambient               add the ambient term (for unconverged solutions)\n"
+    "  --flat                  one value per element instead of smooth vertex\n"
+    "                          radiosity (paper section 6)\n"
     "  -q, --quiet             no progress line and no summary\n"
     "  -h, --help              show this help\n"
     "\n"
@@ -57,6 +73,8 @@ struct Options {
     bool iterationsGiven = false;
     bool convergenceGiven = false;
     std::optional<std::string> reportPath;
+    solver::OutputRequest output;
+    bool flat = false;
     bool quiet = false;
     std::vector<std::string> files;
 };
@@ -97,13 +115,24 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
             options.quiet = true;
             continue;
         }
+        if (arg == "--srgb" || arg == "--ambient" || arg == "--flat") {
+            if (arg == "--srgb")
+                options.output.display.toneMap.encoding.transfer = solver::Transfer::Srgb;
+            else if (arg == "--ambient")
+                options.output.includeAmbient = true;
+            else
+                options.flat = true;
+            continue;
+        }
         std::string value;
         const size_t eq = arg.find('=');
         if (eq != std::string::npos) {
             value = arg.substr(eq + 1);
             arg = arg.substr(0, eq);
         } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" ||
-                   arg == "--visibility" || arg == "--regions" || arg == "--report") {
+                   arg == "--visibility" || arg == "--regions" || arg == "--report" ||
+                   arg == "--out" || arg == "--image" || arg == "--size" || arg == "--exposure" ||
+                   arg == "--gamma" || arg == "--false-colour") {
             if (i + 1 >= argc)
                 return usageError(arg + " needs a value");
             value = argv[++i];
@@ -149,12 +178,50 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
             if (value.empty())
                 return usageError("--report needs a file name");
             options.reportPath = value;
+        } else if (arg == "--out") {
+            if (!solver::modelFormatForPath(value))
+                return usageError("--out expects a .gltf, .glb, .ply or .obj file, not '" + value + "'");
+            options.output.modelPath = value;
+        } else if (arg == "--image") {
+            if (value.empty())
+                return usageError("--image needs a file name");
+            options.output.imagePath = value;
+        } else if (arg == "--size") {
+            int w = 0, h = 0;
+            char x = 0;
+            std::istringstream in(value);
+            if (!(in >> w >> x >> h) || x != 'x' || in.peek() != std::char_traits<char>::eof() || w < 1 ||
+                h < 1 || w > 16384 || h > 16384)
+                return usageError("--size expects WIDTHxHEIGHT from 1x1 to 16384x16384, not '" + value + "'");
+            options.output.imageWidth = w;
+            options.output.imageHeight = h;
+        } else if (arg == "--exposure") {
+            double stops = 0.0;
+            if (!parseNumber(value, stops) || !std::isfinite(stops) || std::abs(stops) > 64)
+                return usageError("--exposure expects a number of stops from -64 to 64, not '" + value + "'");
+            options.output.display.toneMap.exposure = stops;
+        } else if (arg == "--gamma") {
+            double g = 0.0;
+            if (!parseNumber(value, g) || !(g >= 0.1 && g <= 10.0))
+                return usageError("--gamma expects a number from 0.1 to 10, not '" + value + "'");
+            options.output.display.toneMap.encoding.gamma = g;
+        } else if (arg == "--false-colour") {
+            options.output.display.colours = solver::ColourMode::FalseColour;
+            if (value == "log")
+                options.output.display.falseColour.scale = solver::FalseColourScale::Logarithmic;
+            else if (value == "linear")
+                options.output.display.falseColour.scale = solver::FalseColourScale::Linear;
+            else
+                return usageError("--false-colour expects log or linear, not '" + value + "'");
         } else {
             return usageError("unknown option '" + arg + "'");
         }
     }
     if (options.files.empty())
         return usageError("no scene file given");
+    const bool outputs = !options.output.modelPath.empty() || !options.output.imagePath.empty();
+    if (outputs && options.files.size() > 1)
+        return usageError("--out and --image take one scene at a time");
     // "Exactly N shooting steps": the convergence test only applies when asked for.
     if (options.iterationsGiven && !options.convergenceGiven)
         options.solver.convergence = 0.0;
@@ -252,6 +319,25 @@ bool writeReport(const std::string& path, const nlohmann::json& report)
     return true;
 }
 
+// The lit model and the picture (issue 4): smooth vertex radiosity (§6)
+// unless --flat; display values only ever touch the copies written out.
+bool writeSolutionOutputs(const Options& options, const model::Scene& scene, const solver::Solver& s)
+{
+    if (options.output.modelPath.empty() && options.output.imagePath.empty())
+        return true;
+    const solver::SolutionSnapshot snapshot = s.snapshot();
+    const solver::LitMesh mesh = solver::litMeshForOutput(s.prepared(), snapshot.radiosity, !options.flat);
+    solver::OutputRequest request = options.output;
+    request.camera = scene.camera;
+    if (request.includeAmbient)
+        request.display.toneMap.ambient = glm::vec3(snapshot.stats.ambient);
+    if (const std::optional<std::string> error = solver::writeOutputs(mesh, request)) {
+        std::cerr << "regio-solve solve: " << *error << "\n";
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 int runSolve(int argc, char** argv)
@@ -306,6 +392,9 @@ int runSolve(int argc, char** argv)
         nlohmann::json report = solver::solveReport(file, s, total);
         report["status"] = stop == solver::StopReason::Cancelled ? "interrupted" : "solved";
         reports.push_back(std::move(report));
+
+        if (!writeSolutionOutputs(options, *input.scene, s))
+            exitCode = std::max(exitCode, kExitFailure);
 
         if (!options.quiet) {
             const solver::SolverStats st = s.stats();

@@ -335,3 +335,55 @@ TEST(SolveCommand, InterruptStopsTheSolveAndStillWritesTheReport)
     EXPECT_EQ(r["stop"], "cancelled");
     EXPECT_LT(r["iterations"].get<int>(), 1000000);
 }
+
+TEST(SolveOutputs, WritesTheLitModelAndThePictureOfTheSolvedScene)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const fs::path model = scratch / "lit.ply";
+    const fs::path image = scratch / "lit.png";
+    const CommandRun run = solve({"--quiet", "--iterations", "5", "--out", model.string(), "--image",
+                                  image.string(), "--size", "64x48", scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string ply = readText(model);
+    EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+    EXPECT_NE(ply.find("property float radiosity_r"), std::string::npos);
+    const std::string png = readText(image);
+    ASSERT_GT(png.size(), 8u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    // The IHDR chunk holds the size asked for, big-endian.
+    auto be32 = [&](size_t at) {
+        return (unsigned(uint8_t(png[at])) << 24) | (unsigned(uint8_t(png[at + 1])) << 16) |
+               (unsigned(uint8_t(png[at + 2])) << 8) | unsigned(uint8_t(png[at + 3]));
+    };
+    EXPECT_EQ(be32(16), 64u);
+    EXPECT_EQ(be32(20), 48u);
+}
+
+TEST(SolveOutputs, RefusesAnUnknownModelFormatBeforeSolving)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--out", (scratch / "lit.stl").string(), scene.string()});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--out expects a .gltf, .glb, .ply or .obj file"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(scratch / "lit.stl"));
+}
+
+TEST(SolveOutputs, TakeOneSceneAtATime)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--image", (scratch / "a.png").string(), scene.string(), scene.string()});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("one scene at a time"), std::string::npos) << run.err;
+}
+
+TEST(SolveOutputs, RefusesABadPictureSize)
+{
+    Scratch scratch;
+    const fs::path scene = scratch.write("small.json", kSmallScene);
+    const CommandRun run = solve({"--image", (scratch / "a.png").string(), "--size", "0x10", scene.string()});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--size expects"), std::string::npos) << run.err;
+}
