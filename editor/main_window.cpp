@@ -217,14 +217,11 @@ void MainWindow::updateStatistics()
 void MainWindow::updateActions()
 {
     const Selection& s = m_document->selection();
-    const bool geometry = !s.empty() && (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part ||
-                                          s.kind == SelectionKind::Face);
     m_actions.deselect->setEnabled(!s.empty());
-    m_actions.duplicate->setEnabled(geometry && s.kind != SelectionKind::Face);
+    m_actions.duplicate->setEnabled(!s.empty() && (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part));
     m_actions.remove->setEnabled(!s.empty() && s.kind != SelectionKind::Face);
     m_actions.rename->setEnabled(s.ids.size() == 1);
     m_authoring->updateActions();
-    Q_UNUSED(geometry);
 }
 
 // --- files --------------------------------------------------------------------------

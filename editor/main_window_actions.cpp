@@ -127,7 +127,7 @@ void MainWindow::createActions()
     connect(a.gizmoMove, &QAction::triggered, this, [this] { m_viewport->setGizmoMode(GizmoMode::Move); });
     connect(a.gizmoRotate, &QAction::triggered, this, [this] { m_viewport->setGizmoMode(GizmoMode::Rotate); });
     connect(a.gizmoScale, &QAction::triggered, this, [this] { m_viewport->setGizmoMode(GizmoMode::Scale); });
-    a.snap = makeCheckable(this, tr("Snap to &Grid"), QKeySequence(Qt::SHIFT | Qt::Key_Tab), true);
+    a.snap = makeCheckable(this, tr("Snap to &Grid"), {}, true);
     connect(a.snap, &QAction::toggled, this, [this](bool on) {
         m_preferences.snapToGrid = on;
         m_viewport->setSnapEnabled(on);

@@ -140,6 +140,8 @@ void SceneDocument::notify(Change changes)
     m_selection = std::move(pruned);
     if (changes & Change::Objects)
         emit objectsChanged();
+    else if (changes & Change::Geometry)
+        emit geometryChanged();
     if (changes & Change::Materials)
         emit materialsChanged();
     if (changes & Change::Regions)

@@ -23,7 +23,8 @@ enum class Change : unsigned {
     Regions = 1u << 2,   // region boxes, names and BSP orders
     Settings = 1u << 3,  // solver settings
     Camera = 1u << 4,    // the scene's stored camera
-    All = 0x1f,
+    Geometry = 1u << 5,  // vertex positions only: ids, names and structure unchanged
+    All = 0x3f,
 };
 inline Change operator|(Change a, Change b) { return Change(unsigned(a) | unsigned(b)); }
 inline bool operator&(Change a, Change b) { return (unsigned(a) & unsigned(b)) != 0; }
@@ -70,6 +71,8 @@ public:
 
 signals:
     void objectsChanged();
+    // Parts moved, turned or scaled; nothing else about them changed.
+    void geometryChanged();
     void materialsChanged();
     void regionsChanged();
     void settingsChanged();

@@ -272,14 +272,14 @@ void TransformParts::redo()
         m_target.clear();
         m_applied = true;
     }
-    notify(Change::Objects);
+    notify(Change::Geometry);
 }
 
 void TransformParts::undo()
 {
     if (auto r = model::setPartGeometries(scene(), m_before); !r)
         return fail(r.error());
-    notify(Change::Objects);
+    notify(Change::Geometry);
 }
 
 // --- SplitPart ------------------------------------------------------------------------

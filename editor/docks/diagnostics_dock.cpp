@@ -40,6 +40,7 @@ DiagnosticsDock::DiagnosticsDock(SceneDocument* document, QWidget* parent)
     connect(&m_debounce, &QTimer::timeout, this, &DiagnosticsDock::validateNow);
     auto schedule = [this] { m_debounce.start(); };
     connect(document, &SceneDocument::objectsChanged, this, schedule);
+    connect(document, &SceneDocument::geometryChanged, this, schedule);
     connect(document, &SceneDocument::materialsChanged, this, schedule);
     connect(document, &SceneDocument::regionsChanged, this, schedule);
     connect(document, &SceneDocument::settingsChanged, this, schedule);

@@ -79,7 +79,7 @@ PropertiesDock::PropertiesDock(SceneDocument* document, Authoring* authoring, QW
     scroll->setFrameShape(QFrame::NoFrame);
     setWidget(scroll);
 
-    for (auto signal : {&SceneDocument::selectionChanged, &SceneDocument::objectsChanged,
+    for (auto signal : {&SceneDocument::selectionChanged, &SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
                         &SceneDocument::materialsChanged, &SceneDocument::regionsChanged,
                         &SceneDocument::settingsChanged, &SceneDocument::cameraChanged})
         connect(document, signal, this, &PropertiesDock::refresh);

@@ -15,6 +15,11 @@ const QString SceneTreeModel::kPartsMimeType = QStringLiteral("application/x-reg
 
 namespace {
 
+std::string nodeKey(SelectionKind kind, const std::string& id)
+{
+    return std::to_string(int(kind)) + ':' + id;
+}
+
 QIcon swatch(const model::Material* material)
 {
     QPixmap pixmap(14, 14);
@@ -52,6 +57,7 @@ void SceneTreeModel::rebuild()
     beginResetModel();
     m_nodes.clear();
     m_roots.clear();
+    m_nodeById.clear();
     if (m_scene) {
         for (int o = 0; o < int(m_scene->objects.size()); ++o) {
             const int objectNode = int(m_nodes.size());
@@ -70,6 +76,8 @@ void SceneTreeModel::rebuild()
                 }
             }
         }
+        for (int n = 0; n < int(m_nodes.size()); ++n)
+            m_nodeById.emplace(nodeKey(m_nodes[size_t(n)].kind, idAt(createIndex(m_nodes[size_t(n)].row, 0, quintptr(n)))), n);
     }
     endResetModel();
 }
@@ -91,14 +99,8 @@ QModelIndex SceneTreeModel::indexOfNode(int node, int column) const
 
 QModelIndex SceneTreeModel::indexOf(SelectionKind kind, const std::string& id) const
 {
-    if (!m_scene)
-        return {};
-    for (int n = 0; n < int(m_nodes.size()); ++n) {
-        const Node& node = m_nodes[size_t(n)];
-        if (node.kind == kind && idAt(indexOfNode(n)) == id)
-            return indexOfNode(n);
-    }
-    return {};
+    auto it = m_nodeById.find(nodeKey(kind, id));
+    return it == m_nodeById.end() ? QModelIndex() : indexOfNode(it->second);
 }
 
 SelectionKind SceneTreeModel::kindAt(const QModelIndex& index) const

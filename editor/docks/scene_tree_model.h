@@ -9,6 +9,7 @@
 #include <QAbstractItemModel>
 
 #include <functional>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,8 @@ private:
     const model::Scene* m_scene = nullptr;
     std::vector<Node> m_nodes;
     std::vector<int> m_roots;
+    // (kind, id) -> node, so syncing a large selection stays linear.
+    std::unordered_map<std::string, int> m_nodeById;
     MovePartsHandler m_moveParts;
 };
 

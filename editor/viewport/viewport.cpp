@@ -36,6 +36,7 @@ Viewport::Viewport(SceneDocument* document, QWidget* parent)
     grabGesture(Qt::PinchGesture);
 
     connect(document, &SceneDocument::objectsChanged, this, &Viewport::onObjectsChanged);
+    connect(document, &SceneDocument::geometryChanged, this, &Viewport::onObjectsChanged);
     connect(document, &SceneDocument::materialsChanged, this, &Viewport::onMaterialsChanged);
     connect(document, &SceneDocument::regionsChanged, this, &Viewport::onRegionsChanged);
     connect(document, &SceneDocument::selectionChanged, this, &Viewport::onSelectionChanged);

@@ -22,6 +22,8 @@
 #include <QSpinBox>
 #include <QTreeView>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <memory>
 
 using namespace regio;
@@ -82,6 +84,16 @@ private slots:
         QCOMPARE(model->rowCount(model->index(0, 0)), 1);
         window->document()->undoStack()->undo();
         QCOMPARE(model->rowCount(model->index(0, 0)), 2);
+    }
+
+    void movingAPartDoesNotRebuildTheTree()
+    {
+        auto window = makeWindow(test::smallScene());
+        SceneTreeModel* model = dock<SceneTreeDock>(window.get())->model();
+        QSignalSpy resets(model, &QAbstractItemModel::modelReset);
+        window->document()->push(new TransformParts(window->document(), {"crate.body"},
+                                                    glm::translate(glm::dmat4(1.0), {0.0, 1.0, 0.0})));
+        QCOMPARE(resets.count(), 0);
     }
 
     void selectingInTheTreeSelectsInTheDocumentAndBack()

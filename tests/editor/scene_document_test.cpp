@@ -179,6 +179,20 @@ private slots:
         QCOMPARE(regions.count(), 1);
     }
 
+    void movingPartsIsAGeometryChangeOnly()
+    {
+        SceneDocument document;
+        test::resetDocument(document, test::smallScene());
+        QSignalSpy objects(&document, &SceneDocument::objectsChanged);
+        QSignalSpy geometry(&document, &SceneDocument::geometryChanged);
+        document.push(new TransformParts(&document, {"crate.body"}, glm::dmat4(2.0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)));
+        QCOMPARE(geometry.count(), 1);
+        QCOMPARE(objects.count(), 0);
+        document.undoStack()->undo();
+        QCOMPARE(geometry.count(), 2);
+        QCOMPARE(objects.count(), 0);
+    }
+
     void aRefusedEditIsNotOnTheStackAndSaysWhy()
     {
         SceneDocument document;
