@@ -2,6 +2,8 @@
 // that leaves a valid scene.
 #include "editor/authoring.h"
 #include "editor/main_window.h"
+#include "editor/preferences_dialog.h"
+#include "editor/primitive_dialog.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "model/validation.h"
@@ -62,6 +64,34 @@ private slots:
         QCOMPARE(document->undoStack()->count(), 1);
         document->undoStack()->undo();
         QVERIFY(document->scene() == test::smallScene());
+    }
+
+    void thePrimitiveDialogOffersTheDefaultsAndGivesThemBack()
+    {
+        auto window = makeWindow(test::smallScene());
+        for (PrimitiveKind kind : {PrimitiveKind::Box, PrimitiveKind::Prism, PrimitiveKind::Stairs}) {
+            const PrimitiveParams defaults = window->authoring()->defaultPrimitive(kind);
+            PrimitiveDialog dialog(defaults, window->document()->scene());
+            const PrimitiveParams shown = dialog.params();
+            QCOMPARE(shown.id, defaults.id);
+            QCOMPARE(shown.material, defaults.material);
+            QCOMPARE(shown.size, defaults.size);
+            QCOMPARE(shown.base, defaults.base);
+            QCOMPARE(shown.sides, defaults.sides);
+            QCOMPARE(shown.steps, defaults.steps);
+        }
+    }
+
+    void thePreferencesDialogGivesBackWhatItWasGiven()
+    {
+        Preferences p;
+        p.language = QStringLiteral("cs");
+        p.autosaveMinutes = 7;
+        p.gridStep = 0.25;
+        p.snapToGrid = false;
+        p.angleSnapDegrees = 5.0;
+        PreferencesDialog dialog(p);
+        QVERIFY(dialog.preferences() == p);
     }
 
     void aSecondPrimitiveOfAKindGetsAFreshId()
