@@ -1,6 +1,7 @@
 // Progressive shooting (paper §5.6; Cohen et al. 1988) and the solver API
 // around it: shooter choice, the radiosity update, stopping, back faces,
 // snapshots while solving and cancellation.
+#include "solver/prepare.h"
 #include "solver/solver.h"
 #include "solver_test_scenes.h"
 
@@ -125,6 +126,31 @@ TEST(Shooting, PatchUnshotPowerIsTheAreaWeightedSumOfItsElements)
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(s.patchUnshotPower()[i][c], sum[c], 1e-12 + 1e-9 * sum[c]);
     }
+}
+
+TEST(Shooting, ReplacingTheElementStateRecomputesPatchPowersForAGrownMesh)
+{
+    // Adaptive subdivision (§5.7) hands over new per-element arrays; the patch
+    // powers that choose the next shooter must follow them.
+    const model::Scene scene = twoLamps();
+    const PrepareResult prepared = prepareScene(scene, {});
+    ASSERT_TRUE(prepared.scene);
+    const PreparedScene& p = *prepared.scene;
+    Shooting shooting(p, 32, VisibilityMode::Painter);
+    shooting.shoot();
+    std::vector<Rgb> radiosity = shooting.radiosity();
+    std::vector<Rgb> unshot(p.elements.size(), Rgb{0.0});
+    // All unshot light on the floor's first element only.
+    size_t floorElement = 0;
+    while (p.faces[static_cast<size_t>(p.elements[floorElement].properties)].id != "floor.face")
+        ++floorElement;
+    unshot[floorElement] = Rgb{2.0, 2.0, 2.0};
+    shooting.replaceElementState(radiosity, unshot);
+    EXPECT_EQ(shooting.selectShooter(), p.elements[floorElement].patch);
+    const double power = 2.0 * p.elements[floorElement].area;
+    EXPECT_NEAR(shooting.energy().unshot.g, power, 1e-12);
+    EXPECT_NEAR(shooting.patchUnshotPower()[static_cast<size_t>(p.elements[floorElement].patch)].g, power, 1e-12);
+    EXPECT_EQ(shooting.radiosity(), radiosity);
 }
 
 TEST(Shooting, StepShootsExactlyTheRequestedNumberOfTimes)
