@@ -221,6 +221,14 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
     m_rowEnd = static_cast<int>(std::min<std::int64_t>(height, ceilShift<kSubpixelBits>(yMax - half)));
     if (m_rowBegin >= m_rowEnd)
         return false;
+    // Likewise when no column centre lies in [xMin, xMax).
+    std::int32_t xMin = m_fixed[0].x, xMax = m_fixed[0].x;
+    for (int i = 1; i < count; ++i) {
+        xMin = std::min(xMin, m_fixed[i].x);
+        xMax = std::max(xMax, m_fixed[i].x);
+    }
+    if (ceilShift<kSubpixelBits>(xMin - half) >= ceilShift<kSubpixelBits>(xMax - half))
+        return false;
     std::int64_t area2 = 0;
     for (int i = 0; i < count; ++i) {
         const FixedVertex& p = m_fixed[i];
