@@ -138,6 +138,8 @@ std::uint32_t hemicubeOutcode(const Vec3& p)
             bits |= 16u;
         code |= bits << (5 * f);
     }
+    if (p.z <= kNearPlane)
+        code |= kBelowBaseBit;
     return code;
 }
 

@@ -69,7 +69,11 @@ inline Vec3 faceCoordinates(HemicubeFace face, const Vec3& p)
 // inside it and needs no clipping there.
 inline constexpr double kNearPlane = 1e-9; // metres along a face's axis
 inline constexpr std::uint32_t faceOutcodeBits(int face) { return 0x1Fu << (5 * face); }
-inline constexpr std::uint32_t kAllOutcodeBits = 0x1FFFFFFu;
+// Set for points on or below the base plane (z <= kNearPlane): a polygon all
+// of whose vertices have it (the shooter's own plane, most often) covers no
+// pixel centre and is dropped before any face is tried.
+inline constexpr std::uint32_t kBelowBaseBit = 1u << 25;
+inline constexpr std::uint32_t kAllOutcodeBits = 0x3FFFFFFu;
 std::uint32_t hemicubeOutcode(const Vec3& local);
 
 // A projected vertex: fixed-point pixel coordinates with kSubpixelBits
@@ -105,6 +109,8 @@ public:
     template <class SpanOp>
     void rasterize(std::span<const Vec3> local, std::uint32_t orCode, std::uint32_t andCode, SpanOp&& op)
     {
+        if (andCode & kBelowBaseBit)
+            return;
         for (int f = 0; f < kHemicubeFaceCount; ++f) {
             const std::uint32_t bits = faceOutcodeBits(f);
             if (andCode & bits)
@@ -134,6 +140,8 @@ public:
     void rasterizeTriangle(const Vec3* const local[3], const FixedVertex* const projected[3], std::uint32_t orCode,
                            std::uint32_t andCode, SpanOp&& op)
     {
+        if (andCode & kBelowBaseBit)
+            return;
         for (int f = 0; f < kHemicubeFaceCount; ++f) {
             const std::uint32_t bits = faceOutcodeBits(f);
             if (andCode & bits)

@@ -83,8 +83,12 @@ inline void Visibility::rasteriseElement(int element, Paint&& paint)
     const auto i0 = static_cast<size_t>(e.vertices[0]), i1 = static_cast<size_t>(e.vertices[1]),
                i2 = static_cast<size_t>(e.vertices[2]);
     const std::uint32_t andCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
-    // Outside every face: a bit of each face's group is set.
-    bool hidden = true;
+    // On or below the shooter's plane, or outside every face (a bit of each
+    // face's group is set).
+    bool hidden = (andCode & kBelowBaseBit) != 0;
+    if (hidden)
+        return;
+    hidden = true;
     for (int f = 0; f < kHemicubeFaceCount && hidden; ++f)
         hidden = (andCode & faceOutcodeBits(f)) != 0;
     if (hidden)

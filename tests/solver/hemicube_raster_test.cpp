@@ -138,6 +138,18 @@ TEST(HemicubeRaster, OutcodesMarkThePlanesAPointLiesOutside)
     EXPECT_NE(side & faceOutcodeBits(static_cast<int>(HemicubeFace::Top)), 0u);
 }
 
+TEST(HemicubeRaster, APolygonInTheBasePlaneIsDroppedWithoutCoveringAnything)
+{
+    EXPECT_NE(hemicubeOutcode({0.5, 0.5, 0.0}) & kBelowBaseBit, 0u);
+    EXPECT_EQ(hemicubeOutcode({0.5, 0.5, 0.01}) & kBelowBaseBit, 0u);
+    Hemicube h(16);
+    HemicubeRaster raster(h);
+    Coverage cov(h);
+    raster.rasterize(std::vector<Vec3>{{0.1, 0.1, 0}, {2, 0.1, 0}, {2, 2, 0}}, cov);
+    for (int c : cov.count)
+        EXPECT_EQ(c, 0);
+}
+
 TEST(HemicubeRaster, ShooterFrameIsOrthonormalAndRightHanded)
 {
     const ShooterFrame f = ShooterFrame::make({1, 2, 3}, glm::normalize(Vec3{1, 1, 0}), {0, 0, 1});
