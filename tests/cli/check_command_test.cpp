@@ -2,6 +2,7 @@
 // output and its exit status, on the sample scenes, on every broken file of
 // the test data and on hostile input.
 #include "broken_file_table.h"
+#include "command_run.h"
 
 #include <gtest/gtest.h>
 
@@ -18,81 +19,9 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using namespace regio::cli_test;
 
 namespace {
-
-struct CommandRun {
-    bool exited = false; // false: killed by a signal (a crash)
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-std::string shellQuoted(const std::string& arg)
-{
-    std::string out = "'";
-    for (char c : arg)
-        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-// A scratch directory per test, removed afterwards.
-class ScratchDir {
-public:
-    ScratchDir()
-    {
-        static std::atomic<int> counter{0};
-        m_path = fs::temp_directory_path() /
-                 ("regio-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::create_directories(m_path);
-    }
-    ~ScratchDir()
-    {
-        std::error_code ec;
-        fs::remove_all(m_path, ec);
-    }
-    const fs::path& path() const { return m_path; }
-    fs::path write(const std::string& name, const std::string& text) const
-    {
-        std::ofstream(m_path / name, std::ios::binary) << text;
-        return m_path / name;
-    }
-
-private:
-    fs::path m_path;
-};
-
-// Runs regio-solve with `args` from `workDir`, standard input from `stdinFile`.
-CommandRun runRegioSolve(const std::vector<std::string>& args, const fs::path& workDir = {},
-                  const fs::path& stdinFile = "/dev/null")
-{
-    ScratchDir scratch;
-    std::string command;
-    if (!workDir.empty())
-        command += "cd " + shellQuoted(workDir.string()) + " && ";
-    command += shellQuoted(REGIO_SOLVE_EXE);
-    for (const std::string& arg : args)
-        command += " " + shellQuoted(arg);
-    command += " <" + shellQuoted(stdinFile.string()) + " >" +
-               shellQuoted((scratch.path() / "out").string()) + " 2>" +
-               shellQuoted((scratch.path() / "err").string());
-    const int status = std::system(command.c_str());
-    CommandRun run;
-    // The shell reports a child killed by signal N as exit status 128 + N.
-    run.exited = WIFEXITED(status) && WEXITSTATUS(status) < 128;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = readText(scratch.path() / "out");
-    run.err = readText(scratch.path() / "err");
-    return run;
-}
 
 std::vector<std::string> linesOf(const std::string& text)
 {

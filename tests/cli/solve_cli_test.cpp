@@ -1,5 +1,7 @@
 // `regio-solve solve` as a user and a script see it: the real executable, its
 // options, its JSON report, its progress line and its exit status.
+#include "command_run.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -16,71 +18,21 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using namespace regio::cli_test;
 using nlohmann::json;
 
 namespace {
 
-struct CommandRun {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
+using Scratch = ScratchDir;
 
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+std::string quoted(const std::string& arg) { return shellQuoted(arg); }
 
-std::string quoted(const std::string& arg)
-{
-    std::string out = "'";
-    for (char c : arg)
-        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-class Scratch {
-public:
-    Scratch()
-    {
-        static std::atomic<int> counter{0};
-        m_path = fs::temp_directory_path() /
-                 ("regio-solve-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::create_directories(m_path);
-    }
-    ~Scratch()
-    {
-        std::error_code ec;
-        fs::remove_all(m_path, ec);
-    }
-    fs::path operator/(const std::string& name) const { return m_path / name; }
-    fs::path write(const std::string& name, const std::string& text) const
-    {
-        std::ofstream(m_path / name, std::ios::binary) << text;
-        return m_path / name;
-    }
-
-private:
-    fs::path m_path;
-};
-
-// Runs `regio-solve solve ARGS...`; `shellSuffix` may add to the command line.
+// Runs `regio-solve solve ARGS...`.
 CommandRun solve(const std::vector<std::string>& args)
 {
-    Scratch scratch;
-    std::string command = quoted(REGIO_SOLVE_EXE) + " solve";
-    for (const std::string& a : args)
-        command += " " + quoted(a);
-    command += " </dev/null >" + quoted((scratch / "out").string()) + " 2>" + quoted((scratch / "err").string());
-    const int status = std::system(command.c_str());
-    CommandRun run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = readText(scratch / "out");
-    run.err = readText(scratch / "err");
-    return run;
+    std::vector<std::string> all{"solve"};
+    all.insert(all.end(), args.begin(), args.end());
+    return runRegioSolve(all);
 }
 
 const fs::path kScenes = fs::path(REGIO_SOURCE_DIR) / "resources" / "scenes";
