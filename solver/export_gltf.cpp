@@ -1,4 +1,5 @@
 #include "solver/export_gltf.h"
+#include "solver/export_support.h"
 
 #include "solver/atomic_file.h"
 
@@ -213,10 +214,8 @@ std::string gltfBufferPath(const std::string& gltfPath)
 std::optional<std::string> writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
                                      GltfContainer container)
 {
-    if (auto problem = checkLitMesh(mesh))
-        return "cannot write " + path + ": " + *problem;
-    if (colours.linear.size() != mesh.vertexCount())
-        return "cannot write " + path + ": the colours do not match the mesh's vertices";
+    if (auto problem = checkWritable(path, mesh, colours))
+        return problem;
 
     if (container == GltfContainer::Binary) {
         const GltfParts parts = buildGltf(mesh, colours, "");
