@@ -15,6 +15,35 @@ auto* findById(Vector& items, const std::string& id)
 
 } // namespace
 
+const char* visibilityName(Visibility v) { return v == Visibility::Painter ? "painter" : "zbuffer"; }
+
+const char* regionsModeName(RegionsMode mode)
+{
+    switch (mode) {
+    case RegionsMode::Authored: return "authored";
+    case RegionsMode::None: return "none";
+    case RegionsMode::Auto: return "auto";
+    }
+    return "authored";
+}
+
+std::optional<Visibility> parseVisibility(std::string_view text)
+{
+    if (text == "painter")
+        return Visibility::Painter;
+    if (text == "zbuffer")
+        return Visibility::ZBuffer;
+    return std::nullopt;
+}
+
+std::optional<RegionsMode> parseRegionsMode(std::string_view text)
+{
+    for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto})
+        if (text == regionsModeName(mode))
+            return mode;
+    return std::nullopt;
+}
+
 const Material* Scene::findMaterial(const std::string& id) const { return findById(materials, id); }
 Material* Scene::findMaterial(const std::string& id) { return findById(materials, id); }
 const Object* Scene::findObject(const std::string& id) const { return findById(objects, id); }

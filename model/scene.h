@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace regio::model {
@@ -64,9 +65,24 @@ struct AdaptiveSettings {
     bool enabled = true;
     double threshold = 0.05; // relative luminance difference between neighbours
     double minEdge = 0.02;   // metres
+    // Anchoring (Baum et al. 1991, the paper's Figure 5): keep the element mesh
+    // conforming and graded 2:1. Off only to show what it is for.
+    bool anchoring = true;
 
     bool operator==(const AdaptiveSettings&) const = default;
 };
+
+// How the hemicube decides visibility: the paper's painter (back to front
+// through the regional BSP trees, no depth) or a z-buffer for reference.
+enum class Visibility { Painter, ZBuffer };
+// Which regions the solver uses: the authored boxes, none (one BSP tree for
+// the whole scene, the baseline) or automatic boxes by patch count (§3).
+enum class RegionsMode { Authored, None, Auto };
+
+const char* visibilityName(Visibility v);        // "painter" | "zbuffer"
+const char* regionsModeName(RegionsMode mode);   // "authored" | "none" | "auto"
+std::optional<Visibility> parseVisibility(std::string_view text);
+std::optional<RegionsMode> parseRegionsMode(std::string_view text);
 
 struct SolverSettings {
     int hemicube = 150;        // top face resolution N (sides are N x N/2)
@@ -75,6 +91,8 @@ struct SolverSettings {
     AdaptiveSettings adaptive;
     int maxIterations = 500;
     double convergence = 0.001; // stop when unshot / emitted power falls below
+    Visibility visibility = Visibility::Painter;
+    RegionsMode regions = RegionsMode::Authored;
 
     bool operator==(const SolverSettings&) const = default;
 };

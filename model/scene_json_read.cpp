@@ -351,7 +351,7 @@ private:
             return;
         checkKeys(value, pointer,
                   {"hemicube", "patchSize", "elementsPerPatch", "adaptive", "maxIterations",
-                   "convergence"});
+                   "convergence", "visibility", "regions"});
         std::int64_t integer = 0;
         double number = 0.0;
         // The sides of the hemicube are N x N/2 (paper §5.6), so N is even; the
@@ -394,14 +394,28 @@ private:
             else
                 solver.convergence = number;
         }
+        std::string text;
+        if (readString(value, pointer, "visibility", Required::No, text)) {
+            if (auto v = parseVisibility(text))
+                solver.visibility = *v;
+            else
+                error(pointer + "/visibility", "expected \"painter\" or \"zbuffer\"");
+        }
+        if (readString(value, pointer, "regions", Required::No, text)) {
+            if (auto mode = parseRegionsMode(text))
+                solver.regions = *mode;
+            else
+                error(pointer + "/regions", "expected \"authored\", \"none\" or \"auto\"");
+        }
     }
 
     void readAdaptive(const json& value, const std::string& pointer, AdaptiveSettings& adaptive)
     {
         if (!expectObject(value, pointer))
             return;
-        checkKeys(value, pointer, {"enabled", "threshold", "minEdge"});
+        checkKeys(value, pointer, {"enabled", "threshold", "minEdge", "anchoring"});
         readBool(value, pointer, "enabled", adaptive.enabled);
+        readBool(value, pointer, "anchoring", adaptive.anchoring);
         double number = 0.0;
         if (readNumber(value, pointer, "threshold", number)) {
             if (number < 0.0)

@@ -93,9 +93,12 @@ ordered_json solverToJson(const SolverSettings& solver)
     adaptive["enabled"] = solver.adaptive.enabled;
     adaptive["threshold"] = solver.adaptive.threshold;
     adaptive["minEdge"] = solver.adaptive.minEdge;
+    adaptive["anchoring"] = solver.adaptive.anchoring;
     out["adaptive"] = std::move(adaptive);
     out["maxIterations"] = solver.maxIterations;
     out["convergence"] = solver.convergence;
+    out["visibility"] = visibilityName(solver.visibility);
+    out["regions"] = regionsModeName(solver.regions);
     return out;
 }
 

@@ -12,11 +12,11 @@
 
 namespace regio::solver {
 
-enum class RegionsMode {
-    Authored, // the scene's regions; a scene without regions is one region
-    None,     // one region holding everything: one classic BSP tree (the baseline)
-    Auto,     // axis-aligned boxes split by a patch-count threshold (§3, last paragraph)
-};
+// Authored: the scene's regions (a scene without regions is one region);
+// None: one region holding everything, one classic BSP tree (the baseline);
+// Auto: axis-aligned boxes split by a patch-count threshold (§3, last paragraph).
+// The same enum as the scene file's solver.regions setting.
+using model::RegionsMode;
 
 struct PrepareOptions {
     RegionsMode regions = RegionsMode::Authored;

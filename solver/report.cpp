@@ -2,16 +2,6 @@
 
 namespace regio::solver {
 
-const char* regionsModeName(RegionsMode mode)
-{
-    switch (mode) {
-    case RegionsMode::Authored: return "authored";
-    case RegionsMode::None: return "none";
-    case RegionsMode::Auto: return "auto";
-    }
-    return "authored";
-}
-
 nlohmann::json rgbJson(const Rgb& c) { return nlohmann::json::array({c.r, c.g, c.b}); }
 
 nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, std::optional<double> totalSeconds)

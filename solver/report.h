@@ -12,7 +12,7 @@
 
 namespace regio::solver {
 
-const char* regionsModeName(RegionsMode mode);
+using model::regionsModeName;
 
 // One scene's report. `totalSeconds` is the caller's wall time from reading
 // the file to the end of the solve; empty = preprocess + shoot.

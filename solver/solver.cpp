@@ -59,8 +59,10 @@ Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptio
     s.convergence = options.convergence.value_or(scene.solver.convergence);
     s.patchSize = options.patchSize.value_or(scene.solver.patchSize);
     s.elementsPerPatch = options.elementsPerPatch.value_or(scene.solver.elementsPerPatch);
-    s.visibility = options.visibility;
-    s.regions = options.regions;
+    s.visibility = options.visibility.value_or(scene.solver.visibility == model::Visibility::ZBuffer
+                                                   ? VisibilityMode::ZBuffer
+                                                   : VisibilityMode::Painter);
+    s.regions = options.regions.value_or(scene.solver.regions);
     if (s.hemicube < 2) {
         result.diagnostics.push_back(model::makeError("the hemicube resolution must be at least 2", "/solver/hemicube"));
         return result;

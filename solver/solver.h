@@ -35,8 +35,8 @@ struct SolverOptions {
     std::optional<double> convergence;
     std::optional<double> patchSize;
     std::optional<int> elementsPerPatch;
-    VisibilityMode visibility = VisibilityMode::Painter;
-    RegionsMode regions = RegionsMode::Authored;
+    std::optional<VisibilityMode> visibility;
+    std::optional<RegionsMode> regions;
     int autoRegionPatchThreshold = 256;
 };
 

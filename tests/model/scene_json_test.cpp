@@ -139,8 +139,11 @@ TEST(SceneJsonRead, EveryFieldOfTheFormatIsRead)
     EXPECT_FALSE(scene.solver.adaptive.enabled);
     EXPECT_EQ(scene.solver.adaptive.threshold, 0.1);
     EXPECT_EQ(scene.solver.adaptive.minEdge, 0.05);
+    EXPECT_FALSE(scene.solver.adaptive.anchoring);
     EXPECT_EQ(scene.solver.maxIterations, 1200);
     EXPECT_EQ(scene.solver.convergence, 0.0005);
+    EXPECT_EQ(scene.solver.visibility, Visibility::ZBuffer);
+    EXPECT_EQ(scene.solver.regions, RegionsMode::None);
 
     ASSERT_TRUE(scene.camera);
     EXPECT_EQ(scene.camera->position, Vec3(1.0, 1.5, -4.0));
