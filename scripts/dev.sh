@@ -16,6 +16,7 @@ build="${REGIO_BUILD_DIR:-$root/build}"
 packages=(
   g++ cmake ninja-build pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
+  qt6-charts-dev
   libglm-dev nlohmann-json3-dev libstb-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl-dev libgl1-mesa-dri fonts-dejavu-core
