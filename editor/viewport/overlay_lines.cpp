@@ -24,6 +24,19 @@ void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const mod
     }
 }
 
+void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c,
+                           const glm::vec4& colourA, const glm::vec4& colourB, const glm::vec4& colourC)
+{
+    const model::Vec3* points[3] = {&a, &b, &c};
+    const glm::vec4* colours[3] = {&colourA, &colourB, &colourC};
+    for (int i = 0; i < 3; ++i) {
+        const model::Vec3& p = *points[i];
+        const glm::vec4& colour = *colours[i];
+        m_vertices.insert(m_vertices.end(), {float(p.x), float(p.y), float(p.z)});
+        m_vertices.insert(m_vertices.end(), {colour.r, colour.g, colour.b, colour.a});
+    }
+}
+
 void LineList::addBox(const model::Vec3& lo, const model::Vec3& hi, const glm::vec4& colour)
 {
     auto corner = [&](int i) {
