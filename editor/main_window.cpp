@@ -2,6 +2,8 @@
 
 #include "editor/authoring.h"
 #include "editor/autosave.h"
+#include "editor/bsp/bsp_authoring.h"
+#include "editor/bsp/bsp_order_dock.h"
 #include "editor/diagnostics_dialog.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
@@ -111,6 +113,12 @@ void MainWindow::createDocks()
 
     m_diagnostics = new DiagnosticsDock(m_document, this);
     addDockWidget(Qt::BottomDockWidgetArea, m_diagnostics);
+
+    m_bsp = new BspAuthoring(m_document, m_viewport, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_bsp->dock());
+    tabifyDockWidget(m_materials, m_bsp->dock());
+    m_materials->raise();
+    connect(m_bsp, &BspAuthoring::statusMessage, this, [this](const QString& message) { statusBar()->showMessage(message, 5000); });
 
     m_historyDock = new QDockWidget(tr("History"), this);
     m_historyDock->setObjectName(QStringLiteral("HistoryDock"));

@@ -19,6 +19,7 @@ class QUndoView;
 namespace regio::editor {
 
 class Authoring;
+class BspAuthoring;
 class Autosave;
 class DiagnosticsDock;
 class MaterialsDock;
@@ -45,6 +46,7 @@ public:
     SceneDocument* document() const { return m_document; }
     Viewport* viewport() const { return m_viewport; }
     Authoring* authoring() const { return m_authoring; }
+    BspAuthoring* bspAuthoring() const { return m_bsp; }
 
     // Opens a scene. If it cannot be read the current document stays as it
     // is and (when interactive) a dialog lists the diagnostics.
@@ -86,6 +88,7 @@ private:
     SceneDocument* m_document = nullptr;
     Viewport* m_viewport = nullptr;
     Authoring* m_authoring = nullptr;
+    BspAuthoring* m_bsp = nullptr;
     Autosave* m_autosave = nullptr;
 
     SceneTreeDock* m_sceneTree = nullptr;

@@ -1,5 +1,6 @@
 // MainWindow's actions, menus and toolbars.
 #include "editor/authoring.h"
+#include "editor/bsp/bsp_authoring.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
@@ -219,6 +220,7 @@ void MainWindow::createMenus()
     modify->addAction(a.snap);
     modify->addSeparator();
     m_authoring->populateModifyMenu(modify);
+    m_bsp->populateBspMenu(menuBar()->addMenu(tr("&BSP")));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(a.solid);

@@ -1,0 +1,123 @@
+#include "editor/bsp/bsp_analysis.h"
+
+#include "editor/scene_document.h"
+#include "solver/prepare.h"
+
+#include <QPromise>
+#include <QThreadPool>
+
+#include <chrono>
+
+namespace regio::editor {
+
+const solver::RegionBspFigures* BspAnalysis::region(const std::string& regionId) const
+{
+    if (!authored)
+        return nullptr;
+    const int index = authored->regionIndex(regionId);
+    return index < 0 ? nullptr : &authored->regions[size_t(index)];
+}
+
+int BspAnalysis::preparedRegion(const std::string& regionId) const
+{
+    if (!prepared)
+        return -1;
+    for (size_t r = 0; r < prepared->regions.size(); ++r)
+        if (prepared->regions[r].id == regionId)
+            return int(r);
+    return -1;
+}
+
+BspAnalysis analyseBsp(model::Scene sceneCopy)
+{
+    const auto start = std::chrono::steady_clock::now();
+    BspAnalysis out;
+    out.scene = std::make_shared<const model::Scene>(std::move(sceneCopy));
+    const model::Scene& scene = *out.scene;
+    // The figures come from the very preparation whose trees are drawn, so
+    // the tree view, the fragment layer and the numbers never disagree.
+    const solver::BspFiguresOptions authoredOptions{solver::RegionsMode::Authored};
+    solver::PrepareResult prepared = solver::prepareScene(scene, solver::bspStageOptions(authoredOptions));
+    out.diagnostics = std::move(prepared.diagnostics);
+    if (prepared.scene) {
+        out.authored = solver::bspFiguresOf(*prepared.scene, solver::RegionsMode::Authored);
+        out.prepared = std::make_shared<const solver::PreparedScene>(std::move(*prepared.scene));
+    }
+    out.baseline = solver::computeBspFigures(scene, {solver::RegionsMode::None}).figures;
+    out.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+BspAnalyser::BspAnalyser(SceneDocument* document, QObject* parent) : QObject(parent), m_document(document)
+{
+    m_debounce.setSingleShot(true);
+    m_debounce.setInterval(150);
+    connect(&m_debounce, &QTimer::timeout, this, &BspAnalyser::start);
+    connect(&m_watcher, &QFutureWatcher<BspAnalysis>::finished, this, &BspAnalyser::onFinished);
+    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
+                        &SceneDocument::regionsChanged, &SceneDocument::sceneReset})
+        connect(document, signal, this, &BspAnalyser::onChanged);
+    onChanged();
+}
+
+BspAnalyser::~BspAnalyser()
+{
+    // The pool thread owns its copy of the scene and its promise; the result
+    // is simply dropped. Waiting keeps a closing window from outliving its
+    // worker by more than one preparation.
+    m_watcher.disconnect(this);
+    m_watcher.waitForFinished();
+}
+
+void BspAnalyser::refreshNow()
+{
+    m_debounce.stop();
+    m_current = analyseBsp(m_document->scene());
+    m_stale = m_running; // a run still busy holds an older scene
+    m_again = m_running;
+    emit analysed();
+}
+
+void BspAnalyser::onChanged()
+{
+    if (!m_stale) {
+        m_stale = true;
+        emit becameStale();
+    }
+    if (m_running)
+        m_again = true;
+    else
+        m_debounce.start();
+}
+
+void BspAnalyser::start()
+{
+    if (m_running) {
+        m_again = true;
+        return;
+    }
+    m_running = true;
+    m_again = false;
+    auto promise = std::make_shared<QPromise<BspAnalysis>>();
+    m_watcher.setFuture(promise->future());
+    promise->start();
+    QThreadPool::globalInstance()->start([promise, scene = m_document->scene()]() mutable {
+        promise->addResult(analyseBsp(std::move(scene)));
+        promise->finish();
+    });
+}
+
+void BspAnalyser::onFinished()
+{
+    m_running = false;
+    if (m_watcher.future().resultCount() > 0)
+        m_current = m_watcher.future().takeResult();
+    if (m_again) {
+        m_debounce.start();
+    } else {
+        m_stale = false;
+    }
+    emit analysed();
+}
+
+} // namespace regio::editor
