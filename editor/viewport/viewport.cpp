@@ -63,6 +63,40 @@ void Viewport::releaseGl()
     doneCurrent();
 }
 
+void Viewport::setLayer(const QString& name, ViewportLayer layer)
+{
+    m_layers[name] = std::move(layer);
+    m_dirtyLayers.insert(name);
+    update();
+}
+
+void Viewport::removeLayer(const QString& name)
+{
+    if (m_layers.erase(name) == 0)
+        return;
+    m_dirtyLayers.insert(name);
+    update();
+}
+
+void Viewport::setTool(ViewportTool* tool)
+{
+    if (tool == m_tool)
+        return;
+    ViewportTool* previous = m_tool;
+    m_tool = tool;
+    if (previous)
+        previous->deactivated();
+    update();
+}
+
+bool Viewport::hasLayer(const QString& name) const { return m_layers.count(name) > 0; }
+
+const ViewportLayer* Viewport::layer(const QString& name) const
+{
+    auto it = m_layers.find(name);
+    return it == m_layers.end() ? nullptr : &it->second;
+}
+
 ScreenView Viewport::screenView() const
 {
     return ScreenView{m_camera, double(std::max(width(), 1)), double(std::max(height(), 1))};
@@ -262,6 +296,8 @@ void Viewport::initializeGL()
     if (!m_glReady)
         emit renderingFailed(m_renderingError);
     m_geometryDirty = m_coloursDirty = m_selectionDirty = m_regionsDirty = m_gridDirty = m_toolDirty = true;
+    for (const auto& [name, layer] : m_layers)
+        m_dirtyLayers.insert(name);
     // The context goes away when the widget moves to another window (docking,
     // reparenting); initializeGL runs again on the new one.
     disconnect(m_contextConnection);
@@ -298,6 +334,13 @@ void Viewport::makeCurrentAndUpload()
         m_renderer.uploadGrid(buildGrid(m_snap.step, std::max(10.0, sceneRadius() * 2.0)));
         m_gridDirty = false;
     }
+    for (const QString& name : std::as_const(m_dirtyLayers)) {
+        if (auto it = m_layers.find(name); it != m_layers.end())
+            m_renderer.uploadLayer(name, it->second);
+        else
+            m_renderer.removeLayer(name);
+    }
+    m_dirtyLayers.clear();
     if (m_toolDirty) {
         updateToolOverlay();
         m_toolDirty = false;

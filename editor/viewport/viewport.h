@@ -7,7 +7,9 @@
 #include "editor/viewport/clip_tool.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/transform_gizmo.h"
+#include "editor/viewport/viewport_layers.h"
 #include "editor/viewport/viewport_renderer.h"
+#include "editor/viewport/viewport_tool.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
@@ -17,6 +19,8 @@
 #include <QTimer>
 
 #include <glm/mat4x4.hpp>
+
+#include <map>
 
 namespace regio::editor {
 
@@ -60,6 +64,19 @@ public:
     void setOrthographic(bool on);
     // After a new scene: its stored camera if it has one, else frame all.
     void resetView();
+
+    // Overlay layers (viewport_layers.h), kept across GL context changes.
+    // Setting a layer of the same name replaces it.
+    void setLayer(const QString& name, ViewportLayer layer);
+    void removeLayer(const QString& name);
+    bool hasLayer(const QString& name) const;
+    const ViewportLayer* layer(const QString& name) const;
+
+    // The interactive tool that gets input first (viewport_tool.h); nullptr
+    // = none. The viewport does not own it; setting another one (or nullptr)
+    // calls the previous one's deactivated().
+    void setTool(ViewportTool* tool);
+    ViewportTool* tool() const { return m_tool; }
 
     void startClipByPoints();
     void cancelTool();
@@ -132,6 +149,9 @@ private:
     bool m_gridDirty = true;
     bool m_toolDirty = true;
     bool m_glReady = false;
+    std::map<QString, ViewportLayer> m_layers;
+    ViewportTool* m_tool = nullptr;
+    QSet<QString> m_dirtyLayers;
     int m_framesRendered = 0;
     QString m_renderingError;
     QMetaObject::Connection m_contextConnection;

@@ -59,6 +59,8 @@ void Viewport::selectAt(const QPoint& pos, bool toggle)
 void Viewport::mousePressEvent(QMouseEvent* event)
 {
     setFocus(Qt::MouseFocusReason);
+    if (m_tool && m_tool->mousePress(*this, event))
+        return;
     m_pressPos = m_lastPos = event->position().toPoint();
     const Qt::KeyboardModifiers mods = event->modifiers();
     const Qt::MouseButton button = event->button();
@@ -108,6 +110,10 @@ void Viewport::mousePressEvent(QMouseEvent* event)
 
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_tool && m_tool->mouseMove(*this, event)) {
+        m_lastPos = event->position().toPoint();
+        return;
+    }
     const QPoint pos = event->position().toPoint();
     const QPoint delta = pos - m_lastPos;
     m_lastPos = pos;
@@ -156,6 +162,10 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_tool && m_tool->mouseRelease(*this, event)) {
+        m_drag = Drag::None;
+        return;
+    }
     const QPoint pos = event->position().toPoint();
     if (m_drag == Drag::Click && event->button() == Qt::LeftButton &&
         (pos - m_pressPos).manhattanLength() <= kClickSlopPixels) {
@@ -220,6 +230,13 @@ bool Viewport::event(QEvent* event)
 
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
+    if (m_tool && m_tool->keyPress(*this, event))
+        return;
+    if (event->key() == Qt::Key_Escape && m_tool) {
+        setTool(nullptr);
+        emit statusMessage(tr("Cancelled"));
+        return;
+    }
     if (event->key() == Qt::Key_Escape && (m_clip.active() || m_gizmo.dragging())) {
         cancelTool();
         emit statusMessage(tr("Cancelled"));

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace regio::editor {
 
 namespace {
@@ -106,6 +108,11 @@ bool ViewportRenderer::initialize(QString* error)
 
 void ViewportRenderer::release()
 {
+    for (auto& [name, layer] : m_layers) {
+        layer->triangles.destroy();
+        layer->lines.destroy();
+    }
+    m_layers.clear();
     for (GlMesh* mesh : {&m_surfaces, &m_edges, &m_normals, &m_selectionFill, &m_selectionEdges,
                          &m_grid, &m_regions, &m_toolLines, &m_toolTriangles})
         mesh->destroy();
@@ -152,6 +159,54 @@ void ViewportRenderer::uploadToolTriangles(const LineList& triangles)
     m_toolTriangles.upload(triangles.vertices());
 }
 
+void ViewportRenderer::uploadLayer(const QString& name, const ViewportLayer& layer)
+{
+    std::unique_ptr<LayerBuffers>& buffers = m_layers[name];
+    if (!buffers) {
+        buffers = std::make_unique<LayerBuffers>();
+        buffers->triangles.create(GlMesh::Layout::PositionColour);
+        buffers->lines.create(GlMesh::Layout::PositionColour);
+    }
+    buffers->triangles.upload(layer.triangles.vertices());
+    buffers->lines.upload(layer.lines.vertices());
+    buffers->depthTest = layer.depthTest;
+    buffers->replacesSurfaces = layer.replacesSurfaces;
+    buffers->offsetTriangles = layer.offsetTriangles;
+    buffers->order = layer.order;
+}
+
+void ViewportRenderer::removeLayer(const QString& name)
+{
+    auto it = m_layers.find(name);
+    if (it == m_layers.end())
+        return;
+    it->second->triangles.destroy();
+    it->second->lines.destroy();
+    m_layers.erase(it);
+}
+
+// Draws the depth-tested or the on-top layers in ascending order; the flat
+// program is bound and the depth test is set up by the caller.
+void ViewportRenderer::drawLayers(bool depthTested)
+{
+    std::vector<LayerBuffers*> layers;
+    for (const auto& [name, layer] : m_layers)
+        if (layer->depthTest == depthTested)
+            layers.push_back(layer.get());
+    std::stable_sort(layers.begin(), layers.end(),
+                     [](const LayerBuffers* a, const LayerBuffers* b) { return a->order < b->order; });
+    QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+    for (LayerBuffers* layer : layers) {
+        if (layer->offsetTriangles) {
+            gl->glEnable(GL_POLYGON_OFFSET_FILL);
+            gl->glPolygonOffset(1.0f, 1.0f);
+        }
+        layer->triangles.draw(GL_TRIANGLES);
+        gl->glDisable(GL_POLYGON_OFFSET_FILL);
+        layer->lines.draw(GL_LINES);
+    }
+}
+
 void ViewportRenderer::render(const RenderParams& p)
 {
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
@@ -175,8 +230,12 @@ void ViewportRenderer::render(const RenderParams& p)
         gl->glDepthMask(GL_TRUE);
     }
 
+    bool surfacesReplaced = false;
+    for (const auto& [name, layer] : m_layers)
+        surfacesReplaced = surfacesReplaced || layer->replacesSurfaces;
+
     // Surfaces sit slightly behind lines drawn at the same depth.
-    if (p.shading != ShadingMode::Wireframe) {
+    if (p.shading != ShadingMode::Wireframe && !surfacesReplaced) {
         if (p.cullBackFaces) {
             gl->glEnable(GL_CULL_FACE);
             gl->glCullFace(GL_BACK);
@@ -210,6 +269,7 @@ void ViewportRenderer::render(const RenderParams& p)
     }
     if (p.showRegions)
         m_regions.draw(GL_LINES);
+    drawLayers(true);
 
     // Selection: a translucent fill and a bright outline, faintly visible
     // through whatever hides it.
@@ -222,7 +282,8 @@ void ViewportRenderer::render(const RenderParams& p)
     gl->glVertexAttrib4f(ColourAttribute, 1.0f, 0.65f, 0.15f, 0.25f);
     m_selectionEdges.draw(GL_LINES);
 
-    // Tools on top of everything.
+    // Tools and on-top layers over everything.
+    drawLayers(false);
     m_toolTriangles.draw(GL_TRIANGLES);
     m_toolLines.draw(GL_LINES);
     gl->glDepthMask(GL_TRUE);

@@ -5,11 +5,15 @@
 #include "editor/viewport/gl_buffers.h"
 #include "editor/viewport/overlay_lines.h"
 #include "editor/viewport/scene_mesh.h"
+#include "editor/viewport/viewport_layers.h"
 
 #include <QOpenGLShaderProgram>
 
 #include <glm/mat4x4.hpp>
 
+#include <QString>
+
+#include <map>
 #include <memory>
 
 namespace regio::editor {
@@ -44,6 +48,9 @@ public:
     // Gizmo, clip plane and other tool overlays: drawn on top of everything.
     void uploadToolLines(const LineList& lines);
     void uploadToolTriangles(const LineList& triangles);
+    // Overlay layers (viewport_layers.h): replaces or removes one by name.
+    void uploadLayer(const QString& name, const ViewportLayer& layer);
+    void removeLayer(const QString& name);
 
     void render(const RenderParams& params);
 
@@ -52,6 +59,16 @@ private:
     std::unique_ptr<QOpenGLShaderProgram> m_flatProgram;
     GlMesh m_surfaces, m_edges, m_normals, m_selectionFill, m_selectionEdges;
     GlMesh m_grid, m_regions, m_toolLines, m_toolTriangles;
+
+    struct LayerBuffers {
+        GlMesh triangles, lines;
+        bool depthTest = true;
+        bool replacesSurfaces = false;
+        bool offsetTriangles = true;
+        int order = 0;
+    };
+    void drawLayers(bool depthTested);
+    std::map<QString, std::unique_ptr<LayerBuffers>> m_layers;
 };
 
 } // namespace regio::editor

@@ -185,6 +185,61 @@ private slots:
         QVERIFY(document->selection().empty());
     }
 
+    void aLayerThatReplacesSurfacesIsDrawnInsteadOfTheSceneAndGoesAwayWhenRemoved()
+    {
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        const model::Scene& scene = window->document()->scene();
+        const QPoint red = pixelOfFace(viewport, scene, "left-wall.lower");
+        QVERIFY(reddish(viewport->grabFramebuffer().pixel(red)));
+
+        // The red wall's own polygon, painted blue with per-vertex colours.
+        const auto location = scene.locateFace("left-wall.lower");
+        const model::Part& part = scene.objects[size_t(location.object)].parts[size_t(location.part)];
+        const model::Face& face = part.faces[size_t(location.face)];
+        ViewportLayer layer;
+        for (size_t i = 1; i + 1 < face.loop.size(); ++i)
+            layer.triangles.addTriangle(part.vertices[size_t(face.loop[0])], part.vertices[size_t(face.loop[i])],
+                                        part.vertices[size_t(face.loop[i + 1])], {0.1f, 0.2f, 0.9f, 1.0f});
+        layer.replacesSurfaces = true;
+        viewport->setLayer(QStringLiteral("test"), layer);
+        QVERIFY(viewport->hasLayer(QStringLiteral("test")));
+        QImage frame = viewport->grabFramebuffer();
+        QVERIFY2(bluish(frame.pixel(red)), qPrintable(QColor(frame.pixel(red)).name()));
+        // The green wall is not in the layer and the scene's surfaces are replaced.
+        const QPoint green = pixelOfFace(viewport, scene, "right-wall.inside");
+        QVERIFY2(!greenish(frame.pixel(green)), qPrintable(QColor(frame.pixel(green)).name()));
+
+        viewport->removeLayer(QStringLiteral("test"));
+        QVERIFY(!viewport->hasLayer(QStringLiteral("test")));
+        QVERIFY(reddish(viewport->grabFramebuffer().pixel(red)));
+    }
+
+    void aToolGetsClicksFirstAndEscapeDropsIt()
+    {
+        struct CountingTool : ViewportTool {
+            int presses = 0, releases = 0;
+            bool deactivatedCalled = false;
+            bool mousePress(Viewport&, QMouseEvent* e) override { return e->button() == Qt::LeftButton && ++presses; }
+            bool mouseRelease(Viewport&, QMouseEvent* e) override { return e->button() == Qt::LeftButton && ++releases; }
+            void deactivated() override { deactivatedCalled = true; }
+        } tool;
+        auto window = showWindow(test::samplePath("cornell-box.json"));
+        Viewport* viewport = window->viewport();
+        SceneDocument* document = window->document();
+        const QPoint top = pixelOfFace(viewport, document->scene(), "short-block.top");
+        viewport->setTool(&tool);
+        QTest::mouseClick(viewport, Qt::LeftButton, {}, top);
+        QCOMPARE(tool.presses, 1);
+        QCOMPARE(tool.releases, 1);
+        QVERIFY(document->selection().empty()); // the tool used the click
+        QTest::keyClick(viewport, Qt::Key_Escape);
+        QVERIFY(tool.deactivatedCalled);
+        QCOMPARE(viewport->tool(), nullptr);
+        QTest::mouseClick(viewport, Qt::LeftButton, {}, top);
+        QCOMPARE(document->selection(), Selection::single(SelectionKind::Object, "short"));
+    }
+
     void theSelectionIsHighlighted()
     {
         auto window = showWindow(test::samplePath("cornell-box.json"));
