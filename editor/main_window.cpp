@@ -12,6 +12,8 @@
 #include "editor/preferences_dialog.h"
 #include "editor/qt_conversions.h"
 #include "editor/recent_files.h"
+#include "editor/regions/region_authoring.h"
+#include "editor/regions/regions_dock.h"
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 
@@ -113,6 +115,13 @@ void MainWindow::createDocks()
 
     m_diagnostics = new DiagnosticsDock(m_document, this);
     addDockWidget(Qt::BottomDockWidgetArea, m_diagnostics);
+
+    m_regions = new RegionAuthoring(m_document, m_viewport, m_authoring, m_diagnostics, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_regions->dock());
+    tabifyDockWidget(m_materials, m_regions->dock());
+    m_materials->raise();
+    connect(m_regions, &RegionAuthoring::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 5000); });
 
     m_bsp = new BspAuthoring(m_document, m_viewport, this);
     addDockWidget(Qt::RightDockWidgetArea, m_bsp->dock());

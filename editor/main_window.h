@@ -24,6 +24,7 @@ class Autosave;
 class DiagnosticsDock;
 class MaterialsDock;
 class PropertiesDock;
+class RegionAuthoring;
 class SceneDocument;
 class SceneTreeDock;
 class Viewport;
@@ -46,6 +47,7 @@ public:
     SceneDocument* document() const { return m_document; }
     Viewport* viewport() const { return m_viewport; }
     Authoring* authoring() const { return m_authoring; }
+    RegionAuthoring* regionAuthoring() const { return m_regions; }
     BspAuthoring* bspAuthoring() const { return m_bsp; }
 
     // Opens a scene. If it cannot be read the current document stays as it
@@ -88,6 +90,7 @@ private:
     SceneDocument* m_document = nullptr;
     Viewport* m_viewport = nullptr;
     Authoring* m_authoring = nullptr;
+    RegionAuthoring* m_regions = nullptr;
     BspAuthoring* m_bsp = nullptr;
     Autosave* m_autosave = nullptr;
 

@@ -6,6 +6,7 @@
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
 #include "editor/main_window.h"
+#include "editor/regions/region_authoring.h"
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 
@@ -220,6 +221,7 @@ void MainWindow::createMenus()
     modify->addAction(a.snap);
     modify->addSeparator();
     m_authoring->populateModifyMenu(modify);
+    m_regions->populateRegionsMenu(menuBar()->addMenu(tr("&Regions")));
     m_bsp->populateBspMenu(menuBar()->addMenu(tr("&BSP")));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
