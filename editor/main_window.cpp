@@ -10,6 +10,8 @@
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
 #include "editor/preferences_dialog.h"
+#include "editor/preview/preview_controller.h"
+#include "editor/preview/solver_dock.h"
 #include "editor/qt_conversions.h"
 #include "editor/recent_files.h"
 #include "editor/regions/region_authoring.h"
@@ -140,6 +142,10 @@ void MainWindow::createDocks()
     resizeDocks({m_sceneTree}, {280}, Qt::Horizontal);
     resizeDocks({m_properties}, {300}, Qt::Horizontal);
     resizeDocks({m_diagnostics}, {140}, Qt::Vertical);
+
+    m_preview = new PreviewController(m_document, m_viewport, this, m_options.interactive);
+    tabifyDockWidget(m_properties, m_preview->solverDock());
+    m_properties->raise();
 }
 
 // --- settings ------------------------------------------------------------------

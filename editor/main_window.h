@@ -23,6 +23,7 @@ class BspAuthoring;
 class Autosave;
 class DiagnosticsDock;
 class MaterialsDock;
+class PreviewController;
 class PropertiesDock;
 class RegionAuthoring;
 class SceneDocument;
@@ -48,6 +49,7 @@ public:
     Viewport* viewport() const { return m_viewport; }
     Authoring* authoring() const { return m_authoring; }
     RegionAuthoring* regionAuthoring() const { return m_regions; }
+    PreviewController* preview() const { return m_preview; }
     BspAuthoring* bspAuthoring() const { return m_bsp; }
 
     // Opens a scene. If it cannot be read the current document stays as it
@@ -93,6 +95,7 @@ private:
     RegionAuthoring* m_regions = nullptr;
     BspAuthoring* m_bsp = nullptr;
     Autosave* m_autosave = nullptr;
+    PreviewController* m_preview = nullptr;
 
     SceneTreeDock* m_sceneTree = nullptr;
     PropertiesDock* m_properties = nullptr;

@@ -4,6 +4,7 @@
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
+#include "editor/preview/preview_controller.h"
 #include "editor/docks/scene_tree_dock.h"
 #include "editor/main_window.h"
 #include "editor/regions/region_authoring.h"
@@ -243,6 +244,8 @@ void MainWindow::createMenus()
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         docks->addAction(dock->toggleViewAction());
 
+    m_preview->populateMenu(menuBar()->addMenu(tr("&Solve")));
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_authoring->navigationHelpAction());
     help->addSeparator();
@@ -277,6 +280,10 @@ void MainWindow::createToolBars()
     tools->addAction(a.solid);
     tools->addAction(a.wireframe);
     tools->addAction(a.normals);
+
+    QToolBar* solve = addToolBar(tr("Solve"));
+    solve->setObjectName(QStringLiteral("SolveToolBar"));
+    m_preview->populateToolBar(solve);
 
     QToolBar* create = addToolBar(tr("Create"));
     create->setObjectName(QStringLiteral("CreateToolBar"));
