@@ -41,6 +41,13 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         QCoreApplication::translate("regio::editor::CommandLine",
                                     "User interface language for this run (en, cs)."),
         QStringLiteral("code"));
+    const QCommandLineOption previewIterations(
+        QStringLiteral("preview-iterations"),
+        QCoreApplication::translate("regio::editor::CommandLine",
+                                    "With --screenshot: solve the radiosity preview with exactly <n> shooting "
+                                    "steps first and show it."),
+        QStringLiteral("n"));
+    parser.addOption(previewIterations);
     parser.addOption(screenshot);
     parser.addOption(size);
     parser.addOption(language);
@@ -92,6 +99,25 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
                                 .arg(parser.value(size));
             return options;
         }
+    }
+    if (parser.isSet(previewIterations)) {
+        bool ok = false;
+        const int n = parser.value(previewIterations).toInt(&ok);
+        if (!ok || n < 0 || n > 10000000) {
+            options.ok = false;
+            options.error = QCoreApplication::translate("regio::editor::CommandLine",
+                                                        "--preview-iterations wants a number of shooting steps "
+                                                        "(0 or more), got \"%1\"")
+                                .arg(parser.value(previewIterations));
+            return options;
+        }
+        if (options.screenshotPath.isEmpty()) {
+            options.ok = false;
+            options.error = QCoreApplication::translate("regio::editor::CommandLine",
+                                                        "--preview-iterations needs --screenshot");
+            return options;
+        }
+        options.previewIterations = n;
     }
     options.language = parser.value(language);
     return options;

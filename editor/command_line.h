@@ -1,5 +1,5 @@
 #pragma once
-// `regio [SCENE.json] [--screenshot FILE.png] [--size WxH]`
+// `regio [SCENE.json] [--screenshot FILE.png] [--size WxH] [--preview-iterations N]`
 #include <QSize>
 #include <QString>
 #include <QStringList>
@@ -11,6 +11,7 @@ struct CommandLineOptions {
     QString screenshotPath;  // non-empty: grab the window to this file and exit
     QSize size;              // window size; invalid = the saved or default size
     QString language;        // --lang: overrides the preference for this run
+    int previewIterations = -1; // --preview-iterations: shoot N times before the screenshot (-1 = no preview)
     bool ok = true;          // false: `error` says why, exit 2
     QString error;
     bool exitNow = false;    // --help or --version was answered

@@ -1,7 +1,8 @@
-// regio [SCENE.json] [--screenshot FILE.png] [--size WxH]
+// regio [SCENE.json] [--screenshot FILE.png] [--size WxH] [--preview-iterations N]
 #include "editor/command_line.h"
 #include "editor/main_window.h"
 #include "editor/preferences.h"
+#include "editor/preview/preview_screenshot.h"
 #include "editor/screenshot.h"
 #include "editor/translations.h"
 #include "editor/viewport/viewport.h"
@@ -41,6 +42,13 @@ int runScreenshot(const CommandLineOptions& options)
         }
     }
     window.show();
+    if (options.previewIterations >= 0) {
+        QString error;
+        if (!solvePreviewForScreenshot(window, options.previewIterations, &error)) {
+            printError(error);
+            return 2;
+        }
+    }
     int exitCode = 2;
     ScreenshotRunner runner(&window, options.screenshotPath);
     QObject::connect(&runner, &ScreenshotRunner::finished, qApp, [&](int code, const QString& message) {

@@ -1,0 +1,48 @@
+#pragma once
+// How a preview frame becomes viewport layers (DESIGN.md pipeline step 7):
+// the Gouraud-shaded lit mesh with the ambient term, tone-mapped (exposure,
+// gamma) or in false colour, and the element mesh as lines (it shows where
+// adaptive subdivision split elements and how anchoring closed T-vertices).
+// Plain functions of their inputs, so they run on a pool thread.
+#include "editor/preview/preview_session.h"
+#include "editor/viewport/viewport_layers.h"
+#include "solver/export.h"
+#include "solver/false_colour.h"
+
+#include <optional>
+#include <vector>
+
+namespace regio::editor {
+
+struct PreviewDisplay {
+    double exposure = 0.0; // stops
+    double gamma = 2.2;
+    bool falseColour = false;
+    solver::FalseColourScale falseColourScale = solver::FalseColourScale::Logarithmic;
+    bool ambient = true;   // add the ambient term of progressive refinement (Cohen et al. 1988)
+    bool showMesh = false; // element mesh overlay
+
+    bool operator==(const PreviewDisplay&) const = default;
+};
+
+// Layer names in the viewport.
+inline constexpr const char* kSolutionLayer = "preview.solution";
+inline constexpr const char* kMeshLayer = "preview.mesh";
+
+struct PreviewLayers {
+    ViewportLayer solution;
+    std::optional<ViewportLayer> mesh; // when showMesh is on
+    std::optional<solver::FalseColourLegend> legend;
+    double whiteReference = 1.0;       // W/m^2 shown white at exposure 0 (tone mapping)
+};
+
+// The display settings the exports share with the viewport.
+solver::DisplaySettings displaySettings(const PreviewDisplay& display, const PreviewFrame& frame);
+
+PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay& display);
+
+// Area-weighted mean radiosity per input face of the snapshot's own mesh (the
+// figures `regio-solve solve --report` lists), in the mesh's face order.
+std::vector<solver::FaceResult> faceMeans(const solver::SolutionSnapshot& snapshot);
+
+} // namespace regio::editor

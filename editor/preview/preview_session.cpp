@@ -1,0 +1,238 @@
+#include "editor/preview/preview_session.h"
+
+#include "solver/hemicube_view.h"
+#include "solver/shooting.h"
+#include "solver/vertex_radiosity.h"
+
+#include <cmath>
+
+namespace regio::editor {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
+PreviewSession::PreviewSession(Config config, Notify notify)
+    : m_config(std::move(config)), m_notify(std::move(notify)), m_start(std::chrono::steady_clock::now())
+{
+    m_paused = m_config.startPaused;
+    ++s_live;
+    m_thread = std::thread([this] { work(); });
+}
+
+PreviewSession::~PreviewSession()
+{
+    quit();
+    if (m_thread.joinable())
+        m_thread.join();
+    --s_live;
+}
+
+void PreviewSession::pause()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_done)
+        return;
+    m_paused = true;
+    m_cancel.store(true);
+    m_wake.notify_all();
+}
+
+void PreviewSession::resume()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_paused = false;
+    m_wake.notify_all();
+}
+
+void PreviewSession::stop()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_stopRequested = true;
+    m_cancel.store(true);
+    m_wake.notify_all();
+}
+
+void PreviewSession::quit()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_quit = true;
+    m_stopRequested = true;
+    m_cancel.store(true);
+    m_wake.notify_all();
+}
+
+bool PreviewSession::finished() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_done;
+}
+
+std::shared_ptr<const PreviewFrame> PreviewSession::latestFrame() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_latest;
+}
+
+model::Diagnostics PreviewSession::diagnostics() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_diagnostics;
+}
+
+void PreviewSession::requestHemicube(int patch, int resolution)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_hemicubeRequest = std::make_pair(patch, resolution);
+    // A running solve serves it after the shot under way; an idle worker wakes up.
+    m_wake.notify_all();
+}
+
+std::optional<HemicubeImages> PreviewSession::takeHemicube()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    std::optional<HemicubeImages> out = std::move(m_hemicubeResult);
+    m_hemicubeResult.reset();
+    return out;
+}
+
+void PreviewSession::record(const solver::SolverStats& stats)
+{
+    const solver::EnergyBalance& e = stats.energy;
+    const double emitted = solver::luminance(e.emitted);
+    ConvergencePoint p;
+    p.iteration = stats.iterations;
+    if (emitted > 0.0) {
+        p.unshot = solver::luminance(e.unshot) / emitted;
+        p.absorbed = solver::luminance(e.absorbed) / emitted;
+        p.escaped = solver::luminance(e.escaped) / emitted;
+        p.balanceError =
+            std::abs(emitted - solver::luminance(e.absorbed) - solver::luminance(e.unshot) -
+                     solver::luminance(e.escaped)) / emitted;
+    }
+    m_history.push_back(p);
+}
+
+void PreviewSession::publish(bool running)
+{
+    auto frame = std::make_shared<PreviewFrame>();
+    frame->snapshot = m_solver->snapshot();
+    frame->settings = m_solver->settings();
+    frame->running = running;
+    frame->history = m_history;
+    frame->elapsedSeconds = secondsSince(m_start);
+    // On the worker, between shots, the prepared scene and the snapshot describe
+    // the same mesh; if they ever differ (a mesh being regrouped), the flat
+    // element mesh of the snapshot itself is shown.
+    const solver::PreparedScene& prepared = m_solver->prepared();
+    const std::vector<model::Rgb>& radiosity = frame->snapshot.radiosity;
+    if (prepared.elements.size() == radiosity.size()) {
+        frame->unshot = m_solver->shooting().unshotRadiosity();
+        frame->elementPatch.reserve(prepared.elements.size());
+        frame->elementRegion.reserve(prepared.elements.size());
+        for (const solver::Element& e : prepared.elements) {
+            frame->elementPatch.push_back(e.patch);
+            frame->elementRegion.push_back(e.node >= 0 ? prepared.nodes[static_cast<size_t>(e.node)].region : -1);
+        }
+        for (const solver::Region& r : prepared.regions)
+            frame->regionIds.push_back(r.id);
+        frame->lit = std::make_shared<solver::LitMesh>(solver::smoothLitMesh(prepared, radiosity));
+    } else {
+        frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(frame->snapshot));
+    }
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_latest = std::move(frame);
+    }
+    m_lastPublish = std::chrono::steady_clock::now();
+    if (!m_framePending.exchange(true))
+        m_notify(SessionEvent::Frame);
+}
+
+void PreviewSession::serveHemicube()
+{
+    std::optional<std::pair<int, int>> request;
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        request = m_hemicubeRequest;
+        m_hemicubeRequest.reset();
+    }
+    if (!request)
+        return;
+    const solver::PreparedScene& prepared = m_solver->prepared();
+    const auto view = solver::renderHemicubeView(prepared, request->first, request->second, m_solver->settings().visibility);
+    if (!view)
+        return;
+    HemicubeImages images = hemicubeImages(*view, prepared);
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_hemicubeResult = std::move(images);
+    }
+    m_notify(SessionEvent::Hemicube);
+}
+
+void PreviewSession::work()
+{
+    solver::Solver::CreateResult built = solver::Solver::create(m_config.scene, m_config.options);
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_diagnostics = built.diagnostics;
+    }
+    if (!built.solver) {
+        m_exited.store(true);
+        m_notify(SessionEvent::Failed);
+        return;
+    }
+    m_solver = std::move(built.solver);
+    // The scene copy is no longer needed: the solver works on its own PreparedScene.
+    m_config.scene = model::Scene{};
+    publish(!m_config.startPaused);
+
+    const auto interval = std::chrono::milliseconds(m_config.publishIntervalMs);
+    const auto progress = [&](const solver::SolverStats& stats) {
+        record(stats);
+        serveHemicube();
+        if (std::chrono::steady_clock::now() - m_lastPublish >= interval)
+            publish(true);
+    };
+
+    std::unique_lock<std::mutex> lock(m_mutex);
+    for (;;) {
+        m_wake.wait(lock, [&] {
+            return m_quit || m_hemicubeRequest || (!m_done && (m_stopRequested || !m_paused));
+        });
+        if (m_quit)
+            break;
+        if (m_hemicubeRequest) {
+            lock.unlock();
+            serveHemicube();
+            lock.lock();
+            continue;
+        }
+        bool done = m_stopRequested; // stopped while paused: nothing to run
+        if (!done) {
+            m_cancel.store(false);
+            lock.unlock();
+            const solver::StopReason reason = m_solver->run(progress, m_cancel);
+            lock.lock();
+            done = reason != solver::StopReason::Cancelled || m_stopRequested;
+        }
+        m_done = done;
+        if (m_quit)
+            break;
+        lock.unlock();
+        // The state first (Stop is seen at once), then the final frame.
+        m_notify(done ? SessionEvent::Finished : SessionEvent::Paused);
+        publish(false);
+        lock.lock();
+    }
+    lock.unlock();
+    m_exited.store(true);
+}
+
+} // namespace regio::editor
