@@ -87,7 +87,7 @@ RegionAuthoring::RegionAuthoring(SceneDocument* document, Viewport* viewport, Au
     m_showPlanes->setStatusTip(tr("The planes of the solver's regional tree between the region boxes"));
     connect(m_showPlanes, &QAction::toggled, this, &RegionAuthoring::updatePlanesLayer);
 
-    m_dock = new RegionsDock(document, m_figures, {m_draw, m_aroundSelection, m_delete}, dialogParent);
+    m_dock = new RegionsDock(document, m_figures, {m_draw, m_aroundSelection, m_rename, m_delete}, dialogParent);
     connect(m_dock, &RegionsDock::separatingPlaneSelected, this, [this](int node) {
         m_highlightedPlane = node;
         if (node >= 0 && !m_showPlanes->isChecked())

@@ -57,6 +57,8 @@ RegionsDock::RegionsDock(SceneDocument* document, RegionFiguresWatcher* figures,
     m_list->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_list->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_list->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_list->addActions(actions);
     m_list->headerItem()->setToolTip(FragmentsColumn,
                                      tr("Polygons in the region's BSP tree after clipping and splitting, "
                                         "as the solver builds it (fewer is better)"));

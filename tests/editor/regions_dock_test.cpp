@@ -15,8 +15,17 @@
 #include "editor_test_support.h"
 #include "solver/bsp_figures.h"
 #include "solver/prepare.h"
+#include "solver/region_proposal.h"
+
+#include "../cli/command_run.h"
+#include "../solver/furnished_room.h"
 
 #include <QAction>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
 #include <QLabel>
 #include <QMainWindow>
 #include <QTreeView>
@@ -70,6 +79,19 @@ void collect(const solver::PreparedScene& prepared, const model::Scene& scene, i
         collect(prepared, scene, n.back, out);
     if (n.front >= 0)
         collect(prepared, scene, n.front, out);
+}
+
+// The `bsp` block of `regio-solve solve FILE --report` (one shot: the figures
+// come from preparation).
+QJsonObject solveReportBsp(const QString& scenePath)
+{
+    cli_test::ScratchDir scratch;
+    const std::string report = (scratch / "report.json").string();
+    const cli_test::CommandRun run = cli_test::runRegioSolve(
+        {"solve", scenePath.toStdString(), "--iterations", "1", "--hemicube", "8", "--quiet", "--report", report});
+    if (!run.exited || run.exitCode != 0)
+        qFatal("regio-solve failed: %s", run.err.c_str());
+    return QJsonDocument::fromJson(QByteArray::fromStdString(cli_test::readText(report))).object()["bsp"].toObject();
 }
 
 int findDiagnostic(const DiagnosticsModel* model, const QString& needle)
@@ -130,6 +152,58 @@ private slots:
         for (const solver::RegionBspFigures& region : expected.figures->regions)
             QCOMPARE(f.dock()->cellText(region.id, RegionsDock::FragmentsColumn),
                      QString::number(region.figures.fragments));
+    }
+
+    void theFragmentCountsOfEditedRegionsAreWhatRegioSolveReportsForTheSavedFile()
+    {
+        const model::Scene scene = test::loadSample("two-lights-room.json");
+        RegionFixture f(scene);
+        // Accepted automatic regions, then one of them resized.
+        QVERIFY(f.regions->proposeRegions());
+        QVERIFY(f.regions->acceptProposal());
+        const model::Region first = f.document.scene().regions.front();
+        QVERIFY(f.document.push(
+            new SetRegionBox(&f.document, first.id, first.min, first.max + model::Vec3(0.0, 0.25, 0.0))));
+        QVERIFY(f.regions->figures()->waitUntilCurrent());
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("edited.json"));
+        QVERIFY(f.document.save(path));
+        const QJsonObject bsp = solveReportBsp(path);
+        const QJsonArray perRegion = bsp["perRegion"].toArray();
+        QCOMPARE(perRegion.size(), qsizetype(f.document.scene().regions.size()));
+        for (const QJsonValue& value : perRegion) {
+            const QJsonObject region = value.toObject();
+            QCOMPARE(f.dock()->cellText(region["id"].toString().toStdString(), RegionsDock::FragmentsColumn),
+                     QString::number(region["fragments"].toInt()));
+        }
+        QVERIFY(f.dock()->summary()->text().contains(QString::number(bsp["fragments"].toInt())));
+    }
+
+    void editsOnAHundredObjectRoomLeaveTheFiguresToTheWorkerThread()
+    {
+        model::Scene room = test_scenes::furnishedRoom(1);
+        room.regions = solver::proposeRegions(room).regions;
+        QVERIFY(room.regions.size() > 10);
+        RegionFixture f(room);
+        QVERIFY(f.regions->figures()->waitUntilCurrent());
+        // What the UI thread does for one step of a drag: the command, the
+        // dock's lists and every layer. The BSP builds are not part of it.
+        const model::Region& r = f.document.scene().regions.front();
+        QElapsedTimer clock;
+        clock.start();
+        // Shrunk, so it cannot come to overlap a neighbour.
+        QVERIFY(f.document.push(new SetRegionBox(&f.document, r.id, r.min, r.max - model::Vec3(0.0, 0.1, 0.0))));
+        const qint64 ms = clock.elapsed();
+        QVERIFY(f.regions->figures()->stale());
+        qInfo("one region edit on the furnished room (%zu regions): %lld ms on the UI thread", room.regions.size(),
+              static_cast<long long>(ms));
+        QVERIFY2(ms < 250, qPrintable(QStringLiteral("%1 ms").arg(ms)));
+        QVERIFY(f.regions->figures()->waitUntilCurrent());
+        const solver::BspFiguresResult expected = solver::computeBspFigures(f.document.scene());
+        QVERIFY(expected.figures);
+        QVERIFY2(f.dock()->summary()->text().contains(QString::number(expected.figures->fragments)),
+                 qPrintable(f.dock()->summary()->text()));
     }
 
     void selectionFollowsTheDocumentBothWays()

@@ -1,6 +1,7 @@
 // The region tool driven by real mouse events on a shown viewport (Xvfb +
 // Mesa): drawing a box on the ground grid, selecting it by a click, resizing
 // it by a face handle (one undo step per drag), and Esc.
+#include "editor/commands/region_commands.h"
 #include "editor/qt_conversions.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_box_tool.h"
@@ -142,6 +143,32 @@ private slots:
         QTest::mouseClick(t.viewport, Qt::LeftButton, {}, t.pixelOf({2.2, 0, 0.8}));
         QVERIFY(t.document.selection().empty());
         QCOMPARE(t.document.undoStack()->count(), 1);
+    }
+
+    void colouringPartsByRegionIsWhatTheViewportShows()
+    {
+        ShownTool t;
+        t.regions->drawAction()->setChecked(false);
+        t.regions->showBoxesAction()->setChecked(false);
+        QVERIFY(t.document.push(new AddRegion(&t.document, {"left", "", {-1, -1, -1}, {1.5, 3, 2}, {}})));
+        const QPoint desk = t.pixelOf({0.15, 0.75, 0.15}); // the desk top, beside the lamp
+        const auto pixelAt = [&](const QPoint& p) {
+            t.viewport->update();
+            QTest::qWait(50);
+            return t.viewport->grabFramebuffer().pixel(p * t.viewport->devicePixelRatio());
+        };
+        const QRgb material = pixelAt(desk);
+        // The white material: grey.
+        QVERIFY2(std::abs(qRed(material) - qBlue(material)) < 30, qPrintable(QString::number(material, 16)));
+        t.regions->colourByRegionAction()->setChecked(true);
+        const QRgb coloured = pixelAt(desk);
+        const glm::vec4 expected = regionColour(0);
+        // The region's hue (orange for the first), shaded by the fixed light.
+        QVERIFY2(expected.r > expected.b + 0.3f, "the first region colour is warm");
+        QVERIFY2(qRed(coloured) > qBlue(coloured) + 60, qPrintable(QString::number(coloured, 16)));
+        // The crate (x 2..2.5) lies outside every region: grey.
+        const QRgb crate = pixelAt(t.pixelOf({2.25, 0.5, 0.25}));
+        QVERIFY2(std::abs(qRed(crate) - qBlue(crate)) < 30, qPrintable(QString::number(crate, 16)));
     }
 
     void escapeCancelsADrawingThenLeavesTheTool()
