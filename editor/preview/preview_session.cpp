@@ -120,6 +120,7 @@ void PreviewSession::record(const solver::SolverStats& stats)
 
 void PreviewSession::publish(bool running)
 {
+    const auto begin = std::chrono::steady_clock::now();
     auto frame = std::make_shared<PreviewFrame>();
     frame->snapshot = m_solver->snapshot();
     frame->settings = m_solver->settings();
@@ -145,11 +146,14 @@ void PreviewSession::publish(bool running)
     } else {
         frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(frame->snapshot));
     }
+    frame->buildSeconds = secondsSince(begin);
     {
         std::lock_guard<std::mutex> lock(m_mutex);
         m_latest = std::move(frame);
     }
-    m_lastPublish = std::chrono::steady_clock::now();
+    // Frames are spaced from the start of the previous one, so the time to
+    // make one (tens of ms for large meshes) does not stretch the interval.
+    m_lastPublish = begin;
     if (!m_framePending.exchange(true))
         m_notify(SessionEvent::Frame);
 }
