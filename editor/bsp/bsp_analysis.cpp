@@ -66,38 +66,37 @@ BspAnalyser::~BspAnalyser()
     // is simply dropped. Waiting keeps a closing window from outliving its
     // worker by more than one preparation.
     m_watcher.disconnect(this);
-    m_watcher.waitForFinished();
+    if (m_running)
+        m_watcher.waitForFinished();
 }
 
 void BspAnalyser::refreshNow()
 {
     m_debounce.stop();
     m_current = analyseBsp(m_document->scene());
-    m_stale = m_running; // a run still busy holds an older scene
-    m_again = m_running;
+    m_currentRevision = m_revision;
+    m_stale = false;
     emit analysed();
 }
 
 void BspAnalyser::onChanged()
 {
+    ++m_revision;
     if (!m_stale) {
         m_stale = true;
         emit becameStale();
     }
-    if (m_running)
-        m_again = true;
-    else
+    // A busy run sees the change when it ends (onFinished) and starts again.
+    if (!m_running)
         m_debounce.start();
 }
 
 void BspAnalyser::start()
 {
-    if (m_running) {
-        m_again = true;
+    if (m_running)
         return;
-    }
     m_running = true;
-    m_again = false;
+    m_runningRevision = m_revision;
     auto promise = std::make_shared<QPromise<BspAnalysis>>();
     m_watcher.setFuture(promise->future());
     promise->start();
@@ -110,14 +109,19 @@ void BspAnalyser::start()
 void BspAnalyser::onFinished()
 {
     m_running = false;
-    if (m_watcher.future().resultCount() > 0)
-        m_current = m_watcher.future().takeResult();
-    if (m_again) {
-        m_debounce.start();
-    } else {
-        m_stale = false;
+    // refreshNow() may have shown a newer scene meanwhile.
+    const bool newer = m_runningRevision >= m_currentRevision;
+    if (m_watcher.future().resultCount() > 0 && newer) {
+        // result(), not takeResult(): taking resets the future's state to
+        // "not finished", and a later waitForFinished() would never return.
+        m_current = m_watcher.future().result();
+        m_currentRevision = m_runningRevision;
     }
-    emit analysed();
+    m_stale = m_currentRevision != m_revision;
+    if (m_stale)
+        m_debounce.start();
+    if (newer)
+        emit analysed();
 }
 
 } // namespace regio::editor

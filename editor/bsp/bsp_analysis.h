@@ -70,8 +70,9 @@ private:
     QTimer m_debounce;
     QFutureWatcher<BspAnalysis> m_watcher;
     bool m_running = false;
-    bool m_again = false; // the document changed while a run was busy
     bool m_stale = true;
+    // Document changes seen, the one the running worker copied, the one m_current shows.
+    quint64 m_revision = 0, m_runningRevision = 0, m_currentRevision = 0;
     BspAnalysis m_current;
 };
 

@@ -104,7 +104,7 @@ BspAuthoring::BspAuthoring(SceneDocument* document, Viewport* viewport, QWidget*
 
 BspAuthoring::~BspAuthoring()
 {
-    if (m_viewport->tool() == m_insertTool.get() || m_viewport->tool() == m_playbackTool.get())
+    if (m_viewport && (m_viewport->tool() == m_insertTool.get() || m_viewport->tool() == m_playbackTool.get()))
         m_viewport->setTool(nullptr);
 }
 
@@ -168,7 +168,7 @@ void BspAuthoring::onRegionsChanged()
     if (!m_region.empty() && scene.findRegion(m_region))
         return;
     m_region = scene.regions.empty() ? std::string() : scene.regions.front().id;
-    if (m_insertTool && m_viewport->tool() == m_insertTool.get() && m_region.empty())
+    if (insertPickActive() && m_region.empty())
         m_viewport->setTool(nullptr);
     updateActions();
     emit currentRegionChanged(toQString(m_region));
@@ -297,6 +297,8 @@ void BspAuthoring::setShowFragments(bool on)
 
 void BspAuthoring::updateFragmentLayer()
 {
+    if (!m_viewport)
+        return;
     const BspAnalysis& analysis = m_analyser->current();
     const int region = analysis.preparedRegion(m_region);
     if (!m_showFragments || !analysis.prepared || !analysis.scene) {
@@ -326,6 +328,8 @@ void BspAuthoring::setHighlightedNode(int node)
 
 void BspAuthoring::updateNodeLayer()
 {
+    if (!m_viewport)
+        return;
     const BspAnalysis& analysis = m_analyser->current();
     if (m_node < 0 || !analysis.prepared) {
         m_viewport->removeLayer(nodeLayerName());
@@ -338,7 +342,7 @@ void BspAuthoring::updateNodeLayer()
 
 void BspAuthoring::startInsertPick()
 {
-    if (m_region.empty())
+    if (m_region.empty() || !m_viewport)
         return;
     if (!m_insertTool)
         m_insertTool = std::make_unique<FacePickTool>(
@@ -355,6 +359,8 @@ void BspAuthoring::startInsertPick()
 
 void BspAuthoring::startPlaybackPick(bool fromPatch)
 {
+    if (!m_viewport)
+        return;
     m_playbackFromPatch = fromPatch;
     if (!m_playbackTool)
         m_playbackTool = std::make_unique<FacePickTool>(
@@ -370,8 +376,14 @@ void BspAuthoring::startPlaybackPick(bool fromPatch)
     emit viewsChanged();
 }
 
-bool BspAuthoring::insertPickActive() const { return m_insertTool && m_viewport->tool() == m_insertTool.get(); }
-bool BspAuthoring::playbackPickActive() const { return m_playbackTool && m_viewport->tool() == m_playbackTool.get(); }
+bool BspAuthoring::insertPickActive() const
+{
+    return m_insertTool && m_viewport && m_viewport->tool() == m_insertTool.get();
+}
+bool BspAuthoring::playbackPickActive() const
+{
+    return m_playbackTool && m_viewport && m_viewport->tool() == m_playbackTool.get();
+}
 
 void BspAuthoring::cancelTools()
 {

@@ -10,6 +10,7 @@
 #include "solver/bsp_suggest.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <memory>
@@ -100,7 +101,8 @@ private:
     void updateActions();
 
     SceneDocument* m_document;
-    Viewport* m_viewport;
+    // Destroyed before this object when the window closes.
+    QPointer<Viewport> m_viewport;
     BspAnalyser* m_analyser;
     PainterPlayback* m_playback;
     BspOrderDock* m_dock;

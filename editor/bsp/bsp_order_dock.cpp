@@ -65,7 +65,7 @@ BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWi
     m_remove = new QPushButton(tr("Remove"), orderPage);
     m_pick = new QPushButton(tr("Pick in Viewport"), orderPage);
     m_pick->setCheckable(true);
-    m_pick->setToolTip(tr("Click faces in the viewport to insert them after the current entry; Esc ends"));
+    m_pick->setToolTip(tr("Click faces in the viewport to add them at the end of the order; Esc ends"));
     m_insertSelected = new QPushButton(tr("Insert Selected"), orderPage);
     for (QPushButton* b : {m_top, m_remove, m_pick, m_insertSelected})
         buttons->addWidget(b);

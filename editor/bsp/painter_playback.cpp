@@ -108,8 +108,10 @@ void PainterPlayback::stop()
     m_order.reset();
     m_step = 0;
     m_patch = -1;
-    m_viewport->removeLayer(layerName());
-    m_viewport->removeLayer(markerLayerName());
+    if (m_viewport) {
+        m_viewport->removeLayer(layerName());
+        m_viewport->removeLayer(markerLayerName());
+    }
     emit changed();
 }
 
@@ -152,7 +154,7 @@ void PainterPlayback::advance()
 
 void PainterPlayback::updateLayers()
 {
-    if (!m_order || !m_prepared)
+    if (!m_order || !m_prepared || !m_viewport)
         return;
     m_viewport->setLayer(layerName(), buildPainterLayer(*m_prepared, *m_order, m_step));
     m_viewport->setLayer(markerLayerName(), buildPainterMarkerLayer(*m_prepared, *m_order, m_step, m_eye));

@@ -10,6 +10,7 @@
 #include "solver/prepared_scene.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 
 #include <memory>
@@ -66,7 +67,7 @@ private:
     void updateLayers();
 
     SceneDocument* m_document;
-    Viewport* m_viewport;
+    QPointer<Viewport> m_viewport; // destroyed first when the window closes
     std::shared_ptr<const solver::PreparedScene> m_prepared;
     bool m_preparedValid = false;
     std::optional<solver::PainterOrder> m_order;
