@@ -15,7 +15,7 @@ namespace regio::solver {
 namespace {
 
 // Shares the division points of patch edges between the two patches of a
-// fragment that meet along them.
+// face that meet along them.
 class EdgePoints {
 public:
     EdgePoints(std::vector<Vec3>& vertices, int divisions) : m_vertices(vertices), m_k(divisions) {}
@@ -56,7 +56,7 @@ void addElement(PreparedScene& scene, const Patch& patch, int patchIndex, std::a
     e.vertices = v;
     e.patch = patchIndex;
     e.properties = patch.properties;
-    e.node = patch.node;
+    e.node = -1; // set by buildPieces
     e.area = triangleArea(a, b, c);
     e.centroid = (a + b + c) / 3.0;
     e.normal = scene.properties[size_t(patch.properties)].plane.normal;
@@ -104,7 +104,7 @@ int elementGridDivisions(int elementsPerPatch)
     return std::max(1, int(std::lround(std::sqrt(double(std::max(elementsPerPatch, 1))))));
 }
 
-void meshFragments(PreparedScene& scene)
+void meshFaces(PreparedScene& scene)
 {
     scene.vertices.clear();
     scene.patches.clear();
@@ -114,23 +114,28 @@ void meshFragments(PreparedScene& scene)
     const int k = elementGridDivisions(scene.elementsPerPatch);
     EdgePoints edges(scene.vertices, k);
 
-    for (size_t f = 0; f < scene.fragments.size(); ++f) {
-        Fragment& fragment = scene.fragments[f];
-        const Properties& props = scene.properties[size_t(fragment.properties)];
-        std::span<const Vec3> loop(scene.fragmentPoints.data() + fragment.firstPoint, size_t(fragment.pointCount));
-        StripMesh mesh = stripTriangulate(loop, props.plane.normal, scene.patchSize);
+    // The strip method applied to the whole input face (§5.4): patches and
+    // elements do not depend on the regions or on the BSP splits, which only
+    // decide how the elements are painted (solver/pieces.h). The division
+    // points of patch edges are shared across the whole face, so its element
+    // mesh is conforming.
+    for (size_t f = 0; f < scene.faces.size(); ++f) {
+        InputFace& face = scene.faces[f];
+        face.firstPatch = int(scene.patches.size());
+        face.patchCount = 0;
+        if (face.polygon.size() < 3)
+            continue;
+        const Properties& props = scene.properties[f];
+        StripMesh mesh = stripTriangulate(face.polygon, props.plane.normal, scene.patchSize);
 
         const int base = int(scene.vertices.size());
         scene.vertices.insert(scene.vertices.end(), mesh.points.begin(), mesh.points.end());
-        fragment.firstPatch = int(scene.patches.size());
-        fragment.patchCount = int(mesh.triangles.size());
+        face.patchCount = int(mesh.triangles.size());
         edges.clear();
         for (const Triangle& t : mesh.triangles) {
             Patch patch;
             patch.vertices = {base + t[0], base + t[1], base + t[2]};
-            patch.properties = fragment.properties;
-            patch.fragment = int(f);
-            patch.node = fragment.node;
+            patch.properties = int(f);
             const Vec3 &a = scene.vertices[size_t(patch.vertices[0])], &b = scene.vertices[size_t(patch.vertices[1])],
                        &c = scene.vertices[size_t(patch.vertices[2])];
             patch.area = triangleArea(a, b, c);
@@ -140,30 +145,6 @@ void meshFragments(PreparedScene& scene)
             scene.patches.push_back(patch);
             splitPatch(scene, patchIndex, k, edges);
             scene.patches.back().elementCount = int(scene.elements.size()) - patch.firstElement;
-        }
-    }
-
-    // Node ranges follow from the fragment ranges: a node's fragments are
-    // contiguous, so are their patches and elements (possibly none).
-    for (BspNode& node : scene.nodes) {
-        node.patchCount = node.forwardPatches = 0;
-        node.elementCount = node.forwardElements = 0;
-        node.firstPatch = node.fragmentCount > 0 ? scene.fragments[size_t(node.firstFragment)].firstPatch
-                                                 : int(scene.patches.size());
-        node.firstElement = size_t(node.firstPatch) < scene.patches.size()
-                                ? scene.patches[size_t(node.firstPatch)].firstElement
-                                : int(scene.elements.size());
-        for (int i = 0; i < node.fragmentCount; ++i) {
-            const Fragment& fragment = scene.fragments[size_t(node.firstFragment + i)];
-            int elements = 0;
-            for (int p = 0; p < fragment.patchCount; ++p)
-                elements += scene.patches[size_t(fragment.firstPatch + p)].elementCount;
-            node.patchCount += fragment.patchCount;
-            node.elementCount += elements;
-            if (i < node.forwardFragments) {
-                node.forwardPatches += fragment.patchCount;
-                node.forwardElements += elements;
-            }
         }
     }
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Patches and elements (paper §5.4, §5.5): every fragment of a prepared scene
-// is strip-triangulated into triangle patches, and every patch is split into
+// Patches and elements (paper §5.4, §5.5): every input face of a prepared
+// scene (its whole polygon, not its BSP fragments: see prepared_scene.h) is
+// strip-triangulated into triangle patches, and every patch is split into
 // elements by the element/patch ratio.
 //
 // The split is a k x k grid in barycentric coordinates: k^2 triangles, all
@@ -17,10 +18,11 @@ namespace regio::solver {
 // k of the k x k split for an element/patch ratio (at least 1).
 int elementGridDivisions(int elementsPerPatch);
 
-// Fills scene.vertices, patches, elements, the patch/element ranges of the
-// nodes and fragments, and InputFace::elements, from scene.fragments, with
-// scene.patchSize and scene.elementsPerPatch. Vertices are shared between the
-// patches and elements of one fragment (the mesh of a fragment is conforming).
-void meshFragments(PreparedScene& scene);
+// Fills scene.vertices, patches, elements, InputFace::firstPatch/patchCount
+// and InputFace::elements from InputFace::polygon, with scene.patchSize and
+// scene.elementsPerPatch. Vertices are shared between the patches and
+// elements of one face (the mesh of a face is conforming). Element::node and
+// Patch::node are set later, by buildPieces (solver/pieces.h).
+void meshFaces(PreparedScene& scene);
 
 } // namespace regio::solver

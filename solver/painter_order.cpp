@@ -2,6 +2,7 @@
 
 #include "solver/hemicube_raster.h"
 #include "solver/traversal.h"
+#include "solver/visibility.h"
 
 namespace regio::solver {
 
@@ -23,10 +24,17 @@ PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shoo
         [&](int nodeIndex, bool eyeInFront) {
             out.nodes.push_back(nodeIndex);
             const BspNode& node = scene.nodes[size_t(nodeIndex)];
-            const int split = node.firstElement + node.forwardElements;
-            const int end = node.firstElement + node.elementCount;
-            for (int i = node.firstElement; i < end; ++i)
-                out.steps.push_back({i, nodeIndex, node.region, (i < split) == eyeInFront});
+            forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
+                for (int i = begin; i < end; ++i) {
+                    const int element = scene.pieces[size_t(i)].element;
+                    PaintStep* last = out.steps.empty() ? nullptr : &out.steps.back();
+                    if (last && last->element == element && last->node == nodeIndex && last->receives == receives
+                        && last->firstPiece + last->pieceCount == i)
+                        ++last->pieceCount;
+                    else
+                        out.steps.push_back({element, nodeIndex, node.region, receives, i, 1});
+                }
+            });
         });
     return out;
 }

@@ -6,9 +6,13 @@
 // The order comes from the same walk the solver's visibility calls
 // (forEachNodeBackToFront in solver/traversal.h) with the same region culling
 // (boxBehindPlane on the region's contents) and the same rule inside a node
-// (Visibility::render): a node's elements in storage order, the first
-// `forwardElements` receiving when the eye is in front of the node plane and
-// blocking otherwise.
+// (forEachPaintRange in solver/visibility.h).
+//
+// The painter paints element PIECES (solver/pieces.h): an element cut by a
+// separating or BSP plane is painted once per node holding a piece of it. A
+// step is one element's consecutive pieces in one node, so an element cut by
+// a plane appears in more than one step (in different nodes), each step naming
+// the pieces it paints.
 #include "solver/prepared_scene.h"
 
 #include <vector>
@@ -20,13 +24,15 @@ struct PaintStep {
     int node = -1;
     int region = -1;
     bool receives = false; // faces the eye; otherwise painted as a blocker ("no receiver")
+    int firstPiece = -1;   // the piece triangles painted: [firstPiece, firstPiece + pieceCount)
+    int pieceCount = 0;
 };
 
 struct PainterOrder {
     std::vector<int> regions;       // regions walked, back to front
     std::vector<int> culledRegions; // regions skipped whole (behind the shooter plane), in walk order
     std::vector<int> nodes;         // BSP nodes, back to front
-    std::vector<PaintStep> steps;   // elements, back to front: later ones paint over earlier ones
+    std::vector<PaintStep> steps;   // element pieces, back to front: later ones paint over earlier ones
 };
 
 // From a point with no plane: nothing is culled (a point picked in the viewport).

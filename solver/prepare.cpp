@@ -3,7 +3,9 @@
 #include "solver/auto_regions.h"
 #include "solver/bsp_tree.h"
 #include "solver/meshing.h"
+#include "solver/pieces.h"
 #include "solver/regional_tree.h"
+#include "model/winged_edge.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -31,6 +33,9 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
         const model::Object& object = scene.objects[o];
         for (size_t p = 0; p < object.parts.size(); ++p) {
             const model::Part& part = object.parts[p];
+            // A closed part with volume (Properties::solid): a closed surface
+            // needs at least four faces; two faces back to back are a thin wall.
+            const bool solid = part.faces.size() >= 4 && model::WingedEdgeMesh::build(part).isClosed();
             for (size_t f = 0; f < part.faces.size(); ++f) {
                 const model::Face& face = part.faces[f];
                 const int index = int(out.faces.size());
@@ -44,6 +49,7 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
                 info.faceInPart = int(f);
                 Properties props;
                 props.face = index;
+                props.solid = solid;
 
                 const model::Material* material = scene.materialOf(part, face);
                 if (!material) {
@@ -86,6 +92,7 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
                 if (ok && clean.size() >= 3) {
                     for (const Vec3& v : clean)
                         out.bounds.extend(v);
+                    info.polygon = clean;
                     polygons.push_back({std::move(clean), index});
                     ++out.stats.inputFaces;
                 }
@@ -206,8 +213,10 @@ PrepareResult prepareScene(const model::Scene& scene, const PrepareOptions& opti
         out.stats.maxDepth = std::max(out.stats.maxDepth, stats.depth);
     }
 
-    // §5.4, §5.5.
-    meshFragments(out);
+    // §5.4, §5.5 on the input faces, then the elements cut into the pieces
+    // the painter paints per BSP node (solver/pieces.h).
+    meshFaces(out);
+    buildPieces(out);
     out.stats.patches = int(out.patches.size());
     out.stats.elements = int(out.elements.size());
     for (const Element& e : out.elements)

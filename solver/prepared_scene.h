@@ -11,34 +11,51 @@
 //   regionalNodes (the regional tree, §5.2)  -> leaves name a Region
 //   regions        -> bspRoot names a BspNode (one BSP tree per region, §5.3)
 //   nodes          -> [firstFragment, +fragmentCount) fragments on the node's plane
-//                  -> [firstPatch,    +patchCount)    their patches (§5.4)
-//                  -> [firstElement,  +elementCount)  their elements (§5.5)
-//   fragments      -> [firstPatch, +patchCount), [firstPoint, +pointCount) polygon
-//   patches        -> [firstElement, +elementCount)
+//                  -> [firstPiece,    +pieceCount)    the element pieces painted there
+//   faces          -> [firstPatch, +patchCount) patches (§5.4), `elements`
+//   patches        -> [firstElement, +elementCount) elements (§5.5)
 //   elements       -> 3 indices into `vertices`
+//   pieces         -> 3 indices into `pieceVertices`, and the element they belong to
 //   every fragment, patch and element names its Properties (= its input face).
 //
+// Meshing is per INPUT face, not per fragment. The strip method (§5.4) is
+// applied to the whole face and its patches are split into elements (§5.5);
+// the regional clipping (§5.2) and the BSP splits (§5.3) do not touch that
+// mesh. So the shooters (patches) and receivers (elements) are the same
+// whatever the regions and the BSP root orders: regions change nothing but
+// speed, as the paper promises (§3). Meshing each fragment on its own made the
+// mesh, and with it the solution, depend on where the planes cut (up to 11 %
+// per face on the two-light sample).
+//
+// The BSP split only decides how elements are PAINTED: every element is cut
+// into "pieces", the parts of it lying in the cells of the BSP nodes that hold
+// its face's fragments (solver/pieces.h). A piece is fan-triangulated, and the
+// painter paints a node's pieces with the id of their element. An element cut
+// by a plane thus appears in several nodes; its form factor is the sum over
+// its pieces, exactly as if it had been painted whole in the right place.
+//
 // Ordering invariants the painter relies on:
-//   - nodes, fragments, patches and elements are stored in the same order:
-//     the elements of one patch are contiguous, the patches of one fragment are
-//     contiguous, the fragments, patches and elements of one node are contiguous.
-//   - inside a node, the fragments whose normal equals the node plane's normal
-//     come first; `forwardFragments/forwardPatches/forwardElements` count them.
-//     The others (coplanar faces of the opposite orientation, e.g. the two sides
-//     of a thin wall) follow. So from an eye in front of the node plane the
-//     first `forwardElements` face the eye and the rest show their backs, and the
-//     other way round from behind. Back faces are still painted (as blockers with
-//     a "no receiver" id, DESIGN.md): nothing is skipped, only the role changes.
+//   - patches of one face and elements of one patch are contiguous.
+//   - pieces of one node are contiguous: [firstPiece, +pieceCount), in four
+//     groups (F = facing along the node plane's normal, O = the opposite
+//     orientation; "solid" = the face belongs to a closed part, Properties::solid):
+//         [ F solid | F open | O open | O solid ]
+//     forwardPieces counts F, forwardSolidPieces the first group and
+//     oppositeSolidPieces the last. From an eye in front of the node plane F
+//     faces the eye and O shows its back, and the other way round from behind.
+//     Back faces are still painted (as blockers with a "no receiver" id,
+//     DESIGN.md): nothing is skipped, only the role changes. The groups let
+//     the painter put coplanar receivers and blockers in the right order
+//     (Visibility::render): open back faces first, then the receivers, then
+//     solid back faces.
 //
 // Precision: positions are double (the BSP splits and the strip triangulation
 // need it); the rasteriser converts to float in the shooter's frame.
 //
-// Growing the mesh: adaptive subdivision (a later step) splits elements at run
-// time. It appends the new elements and vertices at the end of `elements` /
-// `vertices` and then restores the contiguity invariants by regrouping the
-// element array by (node, patch) and rebuilding the ranges; per-element solver
-// arrays follow the same permutation. Nothing else stores element indices
-// except InputFace::elements, which is rebuilt alongside.
+// Growing the mesh: adaptive subdivision (solver/adaptive_subdivision.h)
+// splits elements at run time. It appends new elements and vertices, turns
+// the split element into one of its children, and rebuilds the pieces
+// (buildPieces); per-element solver arrays grow alongside.
 #include "model/geometry.h"
 #include "model/types.h"
 
@@ -62,6 +79,11 @@ struct Properties {
     Rgb reflectance{0.0};   // diffuse coefficient per channel
     Rgb emission{0.0};      // radiant exitance per unit area (W/m^2 per channel)
     int face = -1;          // index into PreparedScene::faces (== this index)
+    // The face belongs to a closed part with volume (a solid: every edge has
+    // two faces, at least four faces). Where such a face shows its back on a
+    // coplanar receiver, the receiver faces into the solid there (a box
+    // standing on a box): the back face must win (Visibility::render).
+    bool solid = false;
 };
 
 // One face of the input scene, in scene order (objects, parts, faces). Faces
@@ -73,6 +95,9 @@ struct InputFace {
     int part = -1;
     int faceInPart = -1;
     double area = 0.0;     // area of the input polygon
+    std::vector<Vec3> polygon; // the convex polygon the solver meshes (on the plane); empty if unused
+    int firstPatch = 0;    // its patches: [firstPatch, firstPatch + patchCount)
+    int patchCount = 0;
     std::vector<int> elements; // every element that makes up this face (any order)
 };
 
@@ -84,6 +109,8 @@ struct Fragment {
     int region = -1;
     int firstPoint = 0;    // polygon in PreparedScene::fragmentPoints, CCW seen
     int pointCount = 0;    // from its properties' plane normal
+    // Unused since meshing is per input face (see the top of this file):
+    // always 0. Kept so that code reading them still compiles.
     int firstPatch = 0;
     int patchCount = 0;
     double area = 0.0;
@@ -93,8 +120,8 @@ struct Fragment {
 struct Patch {
     std::array<int, 3> vertices{}; // indices into PreparedScene::vertices, CCW from the normal
     int properties = -1;
-    int fragment = -1;
-    int node = -1;
+    int fragment = -1;             // always -1: patches belong to the face, not to a fragment
+    int node = -1;                 // = node of its first element (a patch may span several nodes)
     int firstElement = 0;          // its elements: [firstElement, firstElement + elementCount)
     int elementCount = 0;
     double area = 0.0;
@@ -106,10 +133,18 @@ struct Element {
     std::array<int, 3> vertices{}; // indices into PreparedScene::vertices, CCW from the normal
     int patch = -1;
     int properties = -1;
-    int node = -1;
+    int node = -1;                 // node of its first piece (an element cut by a plane has pieces in several)
     double area = 0.0;
     Vec3 centroid{0.0};
     Vec3 normal{0.0};              // = properties' plane normal (copied for locality)
+    int level = 0;                 // adaptive subdivision depth (0 = as meshed)
+};
+
+// A triangle of an element's part inside one BSP node's cell (see the top of
+// this file). The pieces of one element cover exactly its area.
+struct Piece {
+    std::array<int, 3> vertices{}; // indices into PreparedScene::pieceVertices, CCW from the normal
+    int element = -1;
 };
 
 // A node of a region's BSP tree (§5.3). All fragments on the node plane (both
@@ -120,6 +155,11 @@ struct BspNode {
     int back = -1;
     int region = -1;
     int firstFragment = 0, fragmentCount = 0, forwardFragments = 0;
+    // The pieces painted at this node, grouped [F solid | F open | O open | O solid].
+    int firstPiece = 0, pieceCount = 0, forwardPieces = 0;
+    int forwardSolidPieces = 0, oppositeSolidPieces = 0;
+    // Unused since elements are painted as pieces (always 0); kept so that
+    // code reading them still compiles.
     int firstPatch = 0, patchCount = 0, forwardPatches = 0;
     int firstElement = 0, elementCount = 0, forwardElements = 0;
 };
@@ -162,6 +202,11 @@ struct PrepareStats {
     int maxDepth = 0;        // deepest region BSP tree
     int patches = 0;
     int elements = 0;
+    int pieces = 0;          // piece triangles painted (solver/pieces.h)
+    // Element pieces that found no node holding their face (rounding). They
+    // would be missing from the hemicube; tests assert there are none.
+    int lostPieces = 0;
+    double lostPieceArea = 0.0;
     double area = 0.0;       // total element area (= total input face area)
 };
 
@@ -179,6 +224,8 @@ struct PreparedScene {
     std::vector<Vec3> vertices;            // patch and element corners
     std::vector<Patch> patches;
     std::vector<Element> elements;
+    std::vector<Vec3> pieceVertices;       // a copy of `vertices`, then the split points of pieces
+    std::vector<Piece> pieces;
 
     Box3 bounds;                           // of all geometry
     double patchSize = 0.5;                // the settings it was meshed with

@@ -25,6 +25,10 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     report["unshotRatio"] = stats.unshotRatio;
     report["patches"] = stats.patches;
     report["elements"] = stats.elements;
+    // Element pieces painted per BSP node (solver/pieces.h) and any that found
+    // no node (should be none).
+    report["pieces"] = prepared.stats.pieces;
+    report["lostPieces"] = prepared.stats.lostPieces;
     report["seconds"] = {{"preprocess", stats.preprocessSeconds},
                          {"shoot", stats.shootSeconds},
                          {"total", totalSeconds.value_or(stats.preprocessSeconds + stats.shootSeconds)}};

@@ -35,7 +35,7 @@ void Visibility::prepareFrame(const ShooterFrame& frame)
 {
     m_frame = frame;
     m_shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
-    const size_t count = m_scene.vertices.size();
+    const size_t count = m_scene.pieceVertices.size();
     if (m_stamp.size() != count) {
         m_local.resize(count);
         m_outcode.resize(count);
@@ -55,7 +55,7 @@ inline void Visibility::touch(int vertex)
     if (m_stamp[v] == m_currentStamp)
         return;
     m_stamp[v] = m_currentStamp;
-    const Vec3 local = m_frame.toLocal(m_scene.vertices[v]);
+    const Vec3 local = m_frame.toLocal(m_scene.pieceVertices[v]);
     const std::uint32_t code = hemicubeOutcode(local);
     m_local[v] = local;
     m_outcode[v] = code;
@@ -73,10 +73,10 @@ bool Visibility::regionCulled(int region) const
 }
 
 template <class Paint>
-inline void Visibility::rasteriseElement(int element, Paint&& paint)
+inline void Visibility::rasterisePiece(int piece, Paint&& paint)
 {
     ++m_stats.elementsVisited;
-    const Element& e = m_scene.elements[static_cast<size_t>(element)];
+    const Piece& e = m_scene.pieces[static_cast<size_t>(piece)];
     touch(e.vertices[0]);
     touch(e.vertices[1]);
     touch(e.vertices[2]);
@@ -102,23 +102,24 @@ inline void Visibility::rasteriseElement(int element, Paint&& paint)
     m_raster.rasterizeTriangle(local, projected, orCode, andCode, paint);
 }
 
-void Visibility::paintElement(int element, ItemId id, ItemBuffer& buffer)
+void Visibility::paintPiece(int piece, ItemId id, ItemBuffer& buffer)
 {
     const int n = m_hemicube.resolution();
-    rasteriseElement(element, [&](HemicubeFace f, int row, int x0, int x1) {
+    rasterisePiece(piece, [&](HemicubeFace f, int row, int x0, int x1) {
         ItemId* ids = buffer.face(f) + row * n;
         std::fill(ids + x0, ids + x1, id);
     });
 }
 
-void Visibility::depthTestElement(int element, ItemId id, ItemBuffer& buffer)
+void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
 {
     // Depth 1/w is affine in the face's screen coordinates and exact from the
     // plane: with p = w (sx, sy, 1) in face coordinates and plane n.p + d = 0,
     // 1/w = -(na sx + nb sy + nw) / d.
-    const Element& e = m_scene.elements[static_cast<size_t>(element)];
+    const Piece& p = m_scene.pieces[static_cast<size_t>(piece)];
+    const Element& e = m_scene.elements[static_cast<size_t>(p.element)];
     const Vec3 nLocal = m_frame.directionToLocal(e.normal);
-    const double dLocal = -glm::dot(nLocal, m_frame.toLocal(m_scene.vertices[static_cast<size_t>(e.vertices[0])]));
+    const double dLocal = -glm::dot(nLocal, m_frame.toLocal(m_scene.pieceVertices[static_cast<size_t>(p.vertices[0])]));
     if (dLocal == 0.0)
         return; // the plane contains the shooter's centre: seen edge-on
     const int n = m_hemicube.resolution();
@@ -126,9 +127,18 @@ void Visibility::depthTestElement(int element, ItemId id, ItemBuffer& buffer)
     // Where a back face meets a front face along a silhouette edge both cover
     // the edge pixels at almost equal depth, and float rounding would pick
     // either. The back face is never in front there (it belongs to the same
-    // solid), so it is pushed back by far more than the rounding.
+    // solid), so it is pushed back by far more than the rounding; a thin
+    // two-sided wall then shows its facing side, as in the painter.
+    //
+    // Unlike the painter, the z-buffer also lets a receiver win over the
+    // coplanar back face of a solid it touches (a box standing on a box). The
+    // painter's node order tells the two cases apart (Visibility::render); a
+    // depth bias cannot without giving silhouette edge pixels to back faces.
+    // Such contact areas are seen only from an eye inside a solid (a shooter
+    // patch whose centre lies under a box), so item buffers from eyes outside
+    // every solid are unaffected.
     const double scale = (id == kBlockerItem ? 1.0 - 1e-5 : 1.0) / -dLocal;
-    rasteriseElement(element, [&](HemicubeFace f, int row, int x0, int x1) {
+    rasterisePiece(piece, [&](HemicubeFace f, int row, int x0, int x1) {
         const Vec3 nf = faceCoordinates(f, nLocal);
         const double sy = (row + 0.5) * pixel - (f == HemicubeFace::Top ? 1.0 : 0.0);
         const double base = (nf.y * sy + nf.z) * scale;
@@ -176,36 +186,37 @@ bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std
                 if (cancelled)
                     return;
                 const BspNode& node = m_scene.nodes[static_cast<size_t>(nodeIndex)];
-                // The first forwardElements face along the node plane's normal:
-                // they receive when the eye is in front, block otherwise.
-                const int split = node.firstElement + node.forwardElements;
-                const int end = node.firstElement + node.elementCount;
-                for (int i = node.firstElement; i < end; ++i) {
-                    const bool receives = (i < split) == eyeInFront;
-                    paintElement(i, receives ? itemOfElement(static_cast<std::uint32_t>(i)) : kBlockerItem, buffer);
-                }
-                shouldStop(node.elementCount);
+                forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
+                    for (int i = begin; i < end; ++i) {
+                        const auto element = static_cast<std::uint32_t>(m_scene.pieces[static_cast<size_t>(i)].element);
+                        paintPiece(i, receives ? itemOfElement(element) : kBlockerItem, buffer);
+                    }
+                });
+                shouldStop(node.pieceCount);
             });
         return !cancelled;
     }
 
-    // Z-buffer: element array order, regions culled the same way.
+    // Z-buffer: piece array order (node by node), regions culled the same way.
     std::vector<char>& culled = m_regionCulled;
     culled.resize(m_scene.regions.size());
     for (size_t r = 0; r < culled.size(); ++r) {
         culled[r] = regionCulled(static_cast<int>(r));
         m_stats.regionsCulled += culled[r];
     }
-    const int count = static_cast<int>(m_scene.elements.size());
-    for (int i = 0; i < count; ++i) {
-        const Element& e = m_scene.elements[static_cast<size_t>(i)];
-        const int region = m_scene.nodes[static_cast<size_t>(e.node)].region;
-        if (region >= 0 && culled[static_cast<size_t>(region)])
+    for (const BspNode& node : m_scene.nodes) {
+        if (node.region >= 0 && culled[static_cast<size_t>(node.region)])
             continue;
-        const double facing = glm::dot(e.normal, frame.origin - m_scene.vertices[static_cast<size_t>(e.vertices[0])]);
-        depthTestElement(i, facing > 0.0 ? itemOfElement(static_cast<std::uint32_t>(i)) : kBlockerItem, buffer);
-        if (shouldStop(1))
-            return false;
+        for (int i = node.firstPiece; i < node.firstPiece + node.pieceCount; ++i) {
+            const Piece& piece = m_scene.pieces[static_cast<size_t>(i)];
+            const Element& e = m_scene.elements[static_cast<size_t>(piece.element)];
+            const double facing =
+                glm::dot(e.normal, frame.origin - m_scene.pieceVertices[static_cast<size_t>(piece.vertices[0])]);
+            depthTestPiece(i, facing > 0.0 ? itemOfElement(static_cast<std::uint32_t>(piece.element)) : kBlockerItem,
+                           buffer);
+            if (shouldStop(1))
+                return false;
+        }
     }
     return true;
 }

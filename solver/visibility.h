@@ -3,10 +3,18 @@
 //
 // Painter (the paper's method, §5.6 and Appendix A): the regional tree and the
 // regional BSP trees are walked back to front from the shooter's centre and
-// every element is painted in that order; later elements overwrite earlier
-// ones, no depth is stored or interpolated. Regions whose contents lie behind
-// the shooter's plane are culled whole. Elements facing away from the shooter
-// are painted with kBlockerItem: surfaces are opaque from both sides.
+// every element is painted in that order, as its pieces (solver/pieces.h)
+// node by node; later pieces overwrite earlier ones, no depth is stored or
+// interpolated. Regions whose contents lie behind the shooter's plane are
+// culled whole. Pieces facing away from the shooter are painted with
+// kBlockerItem: surfaces are opaque from both sides.
+//
+// Inside a node, coplanar receivers and blockers overlap where two surfaces
+// touch; the order decides who wins (forEachPaintRange): back faces of open
+// parts first, then the receivers, then back faces of solids. So a thin
+// two-sided wall receives on the side that faces the eye, and a face lying on
+// a solid (the bottom of a box standing on a box, and the top it stands on)
+// receives nothing there: it faces into that solid.
 //
 // Z-buffer (the reference): the same projection, clipping and pixel rule, any
 // order, a depth test per pixel (depth = 1/w, exact from the element plane).
@@ -27,10 +35,33 @@ namespace regio::solver {
 
 enum class VisibilityMode { Painter, ZBuffer };
 
+// The painter's order inside one BSP node: calls op(begin, end, receives)
+// for the node's piece ranges in paint order (see the top of this file and
+// prepared_scene.h for the groups [F solid | F open | O open | O solid]).
+template <class Op>
+inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
+{
+    const int begin = node.firstPiece, end = node.firstPiece + node.pieceCount;
+    const int forwardEnd = begin + node.forwardPieces;
+    const int forwardSolidEnd = begin + node.forwardSolidPieces;
+    const int oppositeSolidBegin = end - node.oppositeSolidPieces;
+    if (eyeInFront) {
+        op(forwardEnd, oppositeSolidBegin, false); // O open: blockers
+        op(begin, forwardEnd, true);               // F: receivers
+        op(oppositeSolidBegin, end, false);        // O solid: blockers
+    } else {
+        op(forwardSolidEnd, forwardEnd, false);    // F open: blockers
+        op(forwardEnd, end, true);                 // O: receivers
+        op(begin, forwardSolidEnd, false);         // F solid: blockers
+    }
+}
+
 const char* visibilityModeName(VisibilityMode mode);
 
 struct VisibilityStats {
     std::int64_t regionsCulled = 0;  // whole regions skipped (behind the shooter plane)
+    // Counted per painted piece triangle (solver/pieces.h); most elements are
+    // one piece.
     std::int64_t elementsVisited = 0;
     std::int64_t elementsRasterised = 0; // not rejected by outcodes
 };
@@ -56,9 +87,9 @@ private:
     void prepareFrame(const ShooterFrame& frame);
     void touch(int vertex);
     template <class Paint>
-    void rasteriseElement(int element, Paint&& paint);
-    void paintElement(int element, ItemId id, ItemBuffer& buffer);
-    void depthTestElement(int element, ItemId id, ItemBuffer& buffer);
+    void rasterisePiece(int piece, Paint&& paint);
+    void paintPiece(int piece, ItemId id, ItemBuffer& buffer);
+    void depthTestPiece(int piece, ItemId id, ItemBuffer& buffer);
     bool regionCulled(int region) const;
 
     const PreparedScene& m_scene;

@@ -2,6 +2,7 @@
 #include "solver/meshing.h"
 
 #include "solver/bsp_tree.h"
+#include "solver/pieces.h"
 #include "solver/strip_triangulation.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,8 @@ using model::Vec3;
 
 namespace {
 
-// Fragments from a one-region BSP build of the given faces, then meshed.
+// Fragments from a one-region BSP build of the given faces, the faces meshed,
+// and the elements cut into pieces by that tree.
 PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSize, int elementsPerPatch)
 {
     PreparedScene scene;
@@ -28,6 +30,7 @@ PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSi
         InputFace info;
         info.id = "f" + std::to_string(index);
         info.area = model::polygonArea(loop);
+        info.polygon = loop;
         scene.faces.push_back(info);
         Properties props;
         props.plane = model::polygonPlane(loop);
@@ -38,10 +41,14 @@ PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSi
     std::vector<int> rank(faces.size());
     std::iota(rank.begin(), rank.end(), 0);
     scene.regions.assign(1, Region{});
+    scene.regionalNodes.assign(1, RegionalNode{});
+    scene.regionalNodes[0].region = 0;
+    scene.regionalRoot = 0;
     buildRegionBsp(scene, 0, polygons, rank);
     scene.patchSize = patchSize;
     scene.elementsPerPatch = elementsPerPatch;
-    meshFragments(scene);
+    meshFaces(scene);
+    buildPieces(scene);
     return scene;
 }
 
@@ -123,15 +130,17 @@ TEST(Meshing, ElementsAreSimilarToTheirPatch)
     }
 }
 
-TEST(Meshing, TheElementMeshOfAFragmentIsConforming)
+TEST(Meshing, TheElementMeshOfAFaceIsConforming)
 {
-    // Inside one fragment every element edge is either shared, in opposite
-    // directions, by two elements, or lies on the fragment's boundary: no
-    // T-vertices, so later smoothing and subdivision see real neighbours.
+    // Inside one input face every element edge is either shared, in opposite
+    // directions, by two elements, or lies on the face's boundary: no
+    // T-vertices, so later smoothing and subdivision see real neighbours. The
+    // mesh is the face's, whatever BSP planes cut the face into fragments.
     PreparedScene s = meshed(kRoomCorner, 0.5, 4);
-    for (const Fragment& fragment : s.fragments) {
+    ASSERT_GT(s.fragments.size(), kRoomCorner.size()) << "the premise: some face is split by a BSP plane";
+    for (const InputFace& face : s.faces) {
         std::map<std::pair<int, int>, int> directed;
-        for (int p = fragment.firstPatch; p < fragment.firstPatch + fragment.patchCount; ++p) {
+        for (int p = face.firstPatch; p < face.firstPatch + face.patchCount; ++p) {
             const Patch& patch = s.patches[size_t(p)];
             for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
                 for (int i = 0; i < 3; ++i)
@@ -144,39 +153,45 @@ TEST(Meshing, TheElementMeshOfAFragmentIsConforming)
                 boundary += glm::length(s.vertices[size_t(edge.second)] - s.vertices[size_t(edge.first)]);
         }
         double perimeter = 0.0;
-        for (int i = 0; i < fragment.pointCount; ++i)
-            perimeter += glm::length(s.fragmentPoints[size_t(fragment.firstPoint + (i + 1) % fragment.pointCount)] -
-                                     s.fragmentPoints[size_t(fragment.firstPoint + i)]);
-        EXPECT_NEAR(boundary, perimeter, 1e-9) << "the open edges are exactly the fragment's outline";
+        for (size_t i = 0; i < face.polygon.size(); ++i)
+            perimeter += glm::length(face.polygon[(i + 1) % face.polygon.size()] - face.polygon[i]);
+        EXPECT_NEAR(boundary, perimeter, 1e-9) << "the open edges are exactly the face's outline";
     }
 }
 
-TEST(Meshing, KeepsPatchesAndElementsOfOneNodeContiguousWithForwardOnesFirst)
+TEST(Meshing, KeepsPiecesOfOneNodeContiguousInTheirFourGroups)
 {
     // Two coplanar faces of opposite orientation share the root node.
     std::vector<std::vector<Vec3>> faces = kRoomCorner;
     faces.push_back({{0, 2.5, 0.1}, {3, 2.5, 0.1}, {3, 2.5, 1}, {0, 2.5, 1}}); // normal -y
     faces.push_back({{0, 2.5, 1.1}, {0, 2.5, 2}, {3, 2.5, 2}, {3, 2.5, 1.1}}); // normal +y, same plane
     PreparedScene s = meshed(faces, 0.5, 4);
-    int nextPatch = 0, nextElement = 0;
+    s.properties[4].solid = true; // groups [F solid | F open | O open | O solid] all in use
+    buildPieces(s);
+    int next = 0;
     for (size_t n = 0; n < s.nodes.size(); ++n) {
         const BspNode& node = s.nodes[n];
-        EXPECT_EQ(node.firstPatch, nextPatch);
-        EXPECT_EQ(node.firstElement, nextElement);
-        nextPatch += node.patchCount;
-        nextElement += node.elementCount;
-        for (int e = node.firstElement; e < node.firstElement + node.elementCount; ++e) {
-            const Element& element = s.elements[size_t(e)];
-            EXPECT_EQ(element.node, int(n));
+        EXPECT_EQ(node.firstPiece, next);
+        next += node.pieceCount;
+        for (int i = node.firstPiece; i < node.firstPiece + node.pieceCount; ++i) {
+            const Element& element = s.elements[size_t(s.pieces[size_t(i)].element)];
             const bool forward = glm::dot(element.normal, node.plane.normal) > 0.0;
-            EXPECT_EQ(forward, e < node.firstElement + node.forwardElements);
+            const bool solid = s.properties[size_t(element.properties)].solid;
+            const int at = i - node.firstPiece;
+            EXPECT_EQ(forward, at < node.forwardPieces);
+            if (forward)
+                EXPECT_EQ(solid, at < node.forwardSolidPieces);
+            else
+                EXPECT_EQ(solid, at >= node.pieceCount - node.oppositeSolidPieces);
+            // The node holds a fragment of the piece's face.
+            bool holds = false;
+            for (int f = node.firstFragment; f < node.firstFragment + node.fragmentCount; ++f)
+                holds = holds || s.fragments[size_t(f)].properties == element.properties;
+            EXPECT_TRUE(holds) << "piece " << i << " in node " << n;
         }
-        for (int p = node.firstPatch; p < node.firstPatch + node.patchCount; ++p)
-            EXPECT_EQ(p < node.firstPatch + node.forwardPatches,
-                      glm::dot(s.properties[size_t(s.patches[size_t(p)].properties)].plane.normal, node.plane.normal) > 0.0);
     }
-    EXPECT_EQ(nextPatch, int(s.patches.size()));
-    EXPECT_EQ(nextElement, int(s.elements.size()));
+    EXPECT_EQ(next, int(s.pieces.size()));
+    EXPECT_EQ(s.stats.lostPieces, 0);
 }
 
 TEST(Meshing, ListsEveryElementOfAnInputFaceOnce)

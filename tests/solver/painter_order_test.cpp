@@ -71,15 +71,18 @@ ItemBuffer paintPlayback(const PreparedScene& s, const Hemicube& hemicube, const
     buffer.clear();
     const int n = hemicube.resolution();
     for (const PaintStep& step : order.steps) {
-        const Element& e = s.elements[size_t(step.element)];
-        const std::array<Vec3, 3> local{frame.toLocal(s.vertices[size_t(e.vertices[0])]),
-                                        frame.toLocal(s.vertices[size_t(e.vertices[1])]),
-                                        frame.toLocal(s.vertices[size_t(e.vertices[2])])};
         const ItemId id = step.receives ? itemOfElement(std::uint32_t(step.element)) : kBlockerItem;
-        raster.rasterize(local, [&](HemicubeFace f, int row, int x0, int x1) {
-            ItemId* ids = buffer.face(f) + row * n;
-            std::fill(ids + x0, ids + x1, id);
-        });
+        for (int i = step.firstPiece; i < step.firstPiece + step.pieceCount; ++i) {
+            const Piece& p = s.pieces[size_t(i)];
+            EXPECT_EQ(p.element, step.element);
+            const std::array<Vec3, 3> local{frame.toLocal(s.pieceVertices[size_t(p.vertices[0])]),
+                                            frame.toLocal(s.pieceVertices[size_t(p.vertices[1])]),
+                                            frame.toLocal(s.pieceVertices[size_t(p.vertices[2])])};
+            raster.rasterize(local, [&](HemicubeFace f, int row, int x0, int x1) {
+                ItemId* ids = buffer.face(f) + row * n;
+                std::fill(ids + x0, ids + x1, id);
+            });
+        }
     }
     return buffer;
 }
@@ -102,7 +105,7 @@ TEST(PainterOrder, WalksTheNodesInTheOrderOfTheSolversTraversal)
     }
 }
 
-TEST(PainterOrder, PaintsTheSameNumberOfElementsAndCullsTheSameRegionsAsThePainter)
+TEST(PainterOrder, PaintsTheSamePiecesAndCullsTheSameRegionsAsThePainter)
 {
     const PreparedScene s = preparedSample();
     const Hemicube hemicube(64);
@@ -111,7 +114,10 @@ TEST(PainterOrder, PaintsTheSameNumberOfElementsAndCullsTheSameRegionsAsThePaint
         ItemBuffer buffer = painter.makeBuffer();
         ASSERT_TRUE(painter.render(frameOf(s, patch), buffer));
         const PainterOrder order = painterOrderFromPatch(s, patch);
-        EXPECT_EQ(std::int64_t(order.steps.size()), painter.stats().elementsVisited) << "patch " << patch;
+        std::int64_t pieces = 0;
+        for (const PaintStep& step : order.steps)
+            pieces += step.pieceCount;
+        EXPECT_EQ(pieces, painter.stats().elementsVisited) << "patch " << patch;
         EXPECT_EQ(std::int64_t(order.culledRegions.size()), painter.stats().regionsCulled) << "patch " << patch;
     }
 }
@@ -150,19 +156,29 @@ TEST(PainterOrder, RepaintedWithTheSolversRasteriserGivesThePaintersItemBuffer)
     EXPECT_GT(reversedDiffers, compared * 3 / 4);
 }
 
-TEST(PainterOrder, ListsEveryElementOnceFromAPointWithNoPlane)
+TEST(PainterOrder, ListsEveryPieceOnceFromAPointWithNoPlane)
 {
+    // Every element is painted, once per node holding a piece of it: an
+    // element cut by a plane appears in several steps, each of its own node.
     const PreparedScene s = preparedSample();
     const PainterOrder order = painterOrder(s, {3.0, 1.5, 2.0});
     EXPECT_TRUE(order.culledRegions.empty());
-    ASSERT_EQ(order.steps.size(), s.elements.size());
-    std::vector<int> seen(s.elements.size(), 0);
+    std::vector<int> pieceSeen(s.pieces.size(), 0), elementSeen(s.elements.size(), 0);
+    std::vector<int> nodeOfPiece(s.pieces.size(), -1);
+    for (size_t n = 0; n < s.nodes.size(); ++n)
+        for (int i = s.nodes[n].firstPiece; i < s.nodes[n].firstPiece + s.nodes[n].pieceCount; ++i)
+            nodeOfPiece[size_t(i)] = int(n);
     for (const PaintStep& step : order.steps) {
-        ++seen[size_t(step.element)];
-        EXPECT_EQ(s.elements[size_t(step.element)].node, step.node);
+        ++elementSeen[size_t(step.element)];
+        EXPECT_GE(step.pieceCount, 1);
+        for (int i = step.firstPiece; i < step.firstPiece + step.pieceCount; ++i) {
+            ++pieceSeen[size_t(i)];
+            EXPECT_EQ(nodeOfPiece[size_t(i)], step.node);
+        }
         EXPECT_EQ(s.nodes[size_t(step.node)].region, step.region);
     }
-    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+    EXPECT_TRUE(std::all_of(pieceSeen.begin(), pieceSeen.end(), [](int n) { return n == 1; }));
+    EXPECT_TRUE(std::all_of(elementSeen.begin(), elementSeen.end(), [](int n) { return n >= 1; }));
     EXPECT_EQ(order.regions.size(), s.regions.size());
 }
 

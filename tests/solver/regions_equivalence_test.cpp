@@ -2,17 +2,13 @@
 // with its authored regions, with none (one classic BSP tree, the baseline)
 // and with automatic regions gives the same radiosity on every input face.
 //
-// Visibility does not depend on the regions at all: where the regional trees
-// and the single tree cut the faces the same way, the solutions are equal.
-// Where they cut differently (BSP planes confined to a region, or the
-// automatic regions' clipping planes), the mesh differs, and with it the
-// discretisation: shooters sit at other patch centres. That error shrinks
-// with the patch size (measured on the conforming scene, automatic regions:
-// box faces up to 11 % apart at 0.5 m patches, 1.7 % at 0.25 m; on the
-// two-light sample, faces of a few hundred cm^2 such as table legs and lamp
-// sides up to 7 % at 0.5 m); the room's surfaces, resolved by many patches,
-// agree within 0.5 % already at 0.5 m. Those are what the last two tests
-// compare; a full-resolution comparison of every face takes minutes.
+// The mesh is made per input face (solver/meshing.h), so patches and
+// elements, and with them the shooters and receivers, are identical in every
+// mode; region planes and BSP splits only cut elements into the pieces the
+// painter paints (solver/pieces.h). What remains between the modes is the
+// order the painter paints in and the pixels along cut edges, which the
+// crack-free cuts keep to rounding, and the shooting order that may differ
+// in ties. Every face of non-zero area is compared, however small.
 #include "solver/solver.h"
 #include "solver_test_scenes.h"
 
@@ -28,26 +24,31 @@ namespace {
 struct Solution {
     std::map<std::string, FaceResult> faces;
     int regions = 0;
-    int fragments = 0;
+    int patches = 0;
+    int elements = 0;
+    int lostPieces = 0;
 };
 
-Solution solve(const model::Scene& scene, RegionsMode regions, double convergence = 2e-3)
+Solution solve(const model::Scene& scene, RegionsMode regions)
 {
     SolverOptions options;
     options.hemicube = 100;
     options.patchSize = 0.5;
     options.elementsPerPatch = 1;
+    options.visibility = VisibilityMode::Painter;
     options.regions = regions;
     options.autoRegionPatchThreshold = 100;
     options.maxIterations = 100000;
-    options.convergence = convergence;
+    options.convergence = 1e-3;
     auto built = Solver::create(scene, options);
     EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
     if (!built.solver)
         return {};
     Solution s;
     s.regions = static_cast<int>(built.solver->prepared().regions.size());
-    s.fragments = built.solver->prepared().stats.fragments;
+    s.patches = static_cast<int>(built.solver->prepared().patches.size());
+    s.elements = static_cast<int>(built.solver->prepared().elements.size());
+    s.lostPieces = built.solver->prepared().stats.lostPieces;
     std::atomic<bool> cancel{false};
     EXPECT_EQ(built.solver->run({}, cancel), StopReason::Converged);
     for (FaceResult& f : built.solver->faceResults())
@@ -55,57 +56,62 @@ Solution solve(const model::Scene& scene, RegionsMode regions, double convergenc
     return s;
 }
 
-// Faces of at least `minArea` agree per channel within 0.5 %.
-void expectSameFaces(const Solution& a, const Solution& b, double minArea, const char* what)
+// Every face of non-zero area agrees per channel within 0.5 %.
+void expectSameFaces(const Solution& a, const Solution& b, const std::string& what)
 {
     ASSERT_EQ(a.faces.size(), b.faces.size());
+    EXPECT_EQ(a.patches, b.patches) << what << ": the same shooters";
+    EXPECT_EQ(a.elements, b.elements) << what << ": the same receivers";
+    EXPECT_EQ(a.lostPieces, 0) << what;
+    EXPECT_EQ(b.lostPieces, 0) << what;
     int compared = 0;
     for (const auto& [id, fa] : a.faces) {
-        if (fa.area < minArea)
+        if (fa.area <= 0.0)
             continue;
         ++compared;
         const FaceResult& fb = b.faces.at(id);
         for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(fa.radiosity[c], fb.radiosity[c], 0.005 * fb.radiosity[c]) << what << ": " << id << " channel " << c;
+            EXPECT_NEAR(fa.radiosity[c], fb.radiosity[c], 0.005 * fb.radiosity[c])
+                << what << ": " << id << " channel " << c;
     }
     EXPECT_GT(compared, 0);
 }
 
+void expectAllModesAgree(const model::Scene& scene, const std::string& name, int authoredRegions)
+{
+    const Solution none = solve(scene, RegionsMode::None);
+    const Solution authored = solve(scene, RegionsMode::Authored);
+    const Solution automatic = solve(scene, RegionsMode::Auto);
+    EXPECT_EQ(none.regions, 1);
+    EXPECT_EQ(authored.regions, authoredRegions);
+    EXPECT_GT(automatic.regions, 1) << "automatic regions cut the scene";
+    expectSameFaces(authored, none, name + " authored vs none");
+    expectSameFaces(automatic, none, name + " auto vs none");
+}
+
 } // namespace
 
-TEST(RegionsEquivalence, RegionalTreesGiveTheSameSolutionAsOneBspTreeOnTheSameMesh)
+TEST(RegionsEquivalence, TheTwoLightSampleGivesTheSameRadiosityOnEveryFaceInAllThreeRegionModes)
 {
-    const model::Scene scene = test::conformingRegionScene();
-    // Equal meshes make equal shooting sequences: no need to converge far.
-    const Solution none = solve(scene, RegionsMode::None, 1e-2);
-    const Solution authored = solve(scene, RegionsMode::Authored, 1e-2);
-    EXPECT_EQ(none.regions, 1);
-    EXPECT_EQ(authored.regions, 4);
-    ASSERT_EQ(none.fragments, authored.fragments); // the premise: the same faces cut the same way
-    expectSameFaces(authored, none, 0.0, "authored vs none");
-}
-
-TEST(RegionsEquivalence, AutomaticRegionsGiveTheSameRadiosityOnEveryResolvedFace)
-{
-    const model::Scene scene = test::conformingRegionScene();
-    const Solution none = solve(scene, RegionsMode::None);
-    const Solution automatic = solve(scene, RegionsMode::Auto);
-    EXPECT_GT(automatic.regions, 4);
-    // Faces of at least eight patches: the room's floor, ceiling and walls.
-    expectSameFaces(automatic, none, 8 * 0.5 * 0.5, "auto vs none");
-}
-
-TEST(RegionsEquivalence, TheTwoLightSampleGivesTheSameRadiosityOnEveryResolvedFaceWithAuthoredRegionsOrNone)
-{
-    // Automatic regions are left out here: they cut the lamp panels, which
-    // emit on every side 2 cm under the ceiling, and at 0.5 m patches the
-    // ceilings then move by up to 1.5 % (discretisation of that 2 cm gap).
     const model::Scene scene = test::loadSample("two-lights-room.json");
     ASSERT_FALSE(scene.objects.empty());
     ASSERT_GE(scene.regions.size(), 2u);
+    expectAllModesAgree(scene, "two-lights-room", static_cast<int>(scene.regions.size()));
+}
+
+TEST(RegionsEquivalence, RandomRegionScenesGiveTheSameRadiosityOnEveryFaceInAllThreeRegionModes)
+{
+    for (unsigned seed : {3u, 11u}) {
+        const model::Scene scene = test::randomRegionScene(seed, 2, 2);
+        expectAllModesAgree(scene, "random scene " + std::to_string(seed), 4);
+    }
+}
+
+TEST(RegionsEquivalence, ARoomCutAtTheRegionBordersGivesTheSameSolutionAsOneBspTree)
+{
+    const model::Scene scene = test::conformingRegionScene();
     const Solution none = solve(scene, RegionsMode::None);
     const Solution authored = solve(scene, RegionsMode::Authored);
-    EXPECT_EQ(none.regions, 1);
-    EXPECT_EQ(authored.regions, static_cast<int>(scene.regions.size()));
-    expectSameFaces(authored, none, 8 * 0.5 * 0.5, "authored vs none");
+    EXPECT_EQ(authored.regions, 4);
+    expectSameFaces(authored, none, "conforming scene authored vs none");
 }

@@ -51,10 +51,10 @@ void collect(const PreparedScene& s, int node, std::vector<int>& out)
 }
 
 // Möller-Trumbore; returns the distance along the ray or -1.
-double hit(const PreparedScene& s, const Element& e, const Vec3& origin, const Vec3& direction)
+double hit(const PreparedScene& s, const Piece& e, const Vec3& origin, const Vec3& direction)
 {
-    const Vec3 a = s.vertices[size_t(e.vertices[0])], b = s.vertices[size_t(e.vertices[1])],
-               c = s.vertices[size_t(e.vertices[2])];
+    const Vec3 a = s.pieceVertices[size_t(e.vertices[0])], b = s.pieceVertices[size_t(e.vertices[1])],
+               c = s.pieceVertices[size_t(e.vertices[2])];
     const Vec3 e1 = b - a, e2 = c - a, p = glm::cross(direction, e2);
     const double det = glm::dot(e1, p);
     if (std::abs(det) < 1e-14)
@@ -171,10 +171,10 @@ TEST(Traversal, PaintsRegionsOnTheFarSideOfEachSeparatingPlaneFirst)
     }
 }
 
-TEST(Traversal, NeverPaintsAnOccludedElementAfterTheOneHidingIt)
+TEST(Traversal, NeverPaintsAnOccludedPieceAfterTheOneHidingIt)
 {
-    // Ray casting: along any ray from the eye, the nearer of two elements hit
-    // must be painted later. Checked in all three region modes.
+    // Ray casting: along any ray from the eye, the nearer of two element
+    // pieces hit must be painted later. Checked in all three region modes.
     const model::Scene scene = test_scenes::roomWithRegions(8, 2, 2, 4);
     for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto}) {
         PreparedScene s = prepared(scene, mode);
@@ -188,9 +188,10 @@ TEST(Traversal, NeverPaintsAnOccludedElementAfterTheOneHidingIt)
             for (int ray = 0; ray < 150; ++ray) {
                 const Vec3 direction = randomDirection(random);
                 std::vector<std::pair<double, int>> hits;
-                for (size_t e = 0; e < s.elements.size(); ++e)
-                    if (double t = hit(s, s.elements[e], eye, direction); t > 0.0)
-                        hits.push_back({t, s.elements[e].node});
+                for (size_t n = 0; n < s.nodes.size(); ++n)
+                    for (int i = s.nodes[n].firstPiece; i < s.nodes[n].firstPiece + s.nodes[n].pieceCount; ++i)
+                        if (double t = hit(s, s.pieces[size_t(i)], eye, direction); t > 0.0)
+                            hits.push_back({t, int(n)});
                 std::sort(hits.begin(), hits.end());
                 for (size_t i = 0; i + 1 < hits.size(); ++i) {
                     if (hits[i + 1].first - hits[i].first < 1e-7 || hits[i].second == hits[i + 1].second)
