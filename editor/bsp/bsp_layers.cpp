@@ -108,7 +108,9 @@ ViewportLayer buildFragmentLayer(const model::Scene& scene, const solver::Prepar
 {
     ViewportLayer layer;
     layer.depthTest = true;
-    layer.order = 20;
+    // Before the translucent region boxes (order 10), whose faces write depth
+    // and would hide lines drawn after them.
+    layer.order = 7;
     FragmentEdgeCounts tally;
     for (size_t i = 0; i < prepared.fragments.size(); ++i) {
         const solver::Fragment& f = prepared.fragments[i];
@@ -172,7 +174,7 @@ ViewportLayer buildNodePlaneLayer(const solver::PreparedScene& prepared, int nod
     ViewportLayer layer;
     layer.depthTest = true;
     layer.offsetTriangles = true;
-    layer.order = 21;
+    layer.order = 8;
     if (nodeIndex < 0 || size_t(nodeIndex) >= prepared.nodes.size())
         return layer;
     const solver::BspNode& node = prepared.nodes[size_t(nodeIndex)];
@@ -209,7 +211,8 @@ ViewportLayer buildPainterLayer(const solver::PreparedScene& prepared, const sol
     ViewportLayer layer;
     layer.depthTest = true;
     layer.replacesSurfaces = true;
-    layer.order = 30;
+    // Opaque, so before every translucent layer (the region boxes are 10).
+    layer.order = -5;
     const int count = int(order.steps.size());
     steps = std::clamp(steps, 0, count);
     for (int i = 0; i < steps; ++i) {
