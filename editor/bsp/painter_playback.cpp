@@ -87,12 +87,23 @@ int PainterPlayback::patchAt(const std::string& faceId, const model::Vec3& point
     const auto scene = prepared();
     if (!scene)
         return -1;
+    // The patch whose triangle holds the point; failing that (a point on an
+    // edge, rounding), the patch of that face with the nearest centroid.
     int best = -1;
     double bestDistance = std::numeric_limits<double>::max();
     for (size_t i = 0; i < scene->patches.size(); ++i) {
         const solver::Patch& p = scene->patches[i];
         if (scene->faces[size_t(scene->properties[size_t(p.properties)].face)].id != faceId)
             continue;
+        const model::Vec3& a = scene->vertices[size_t(p.vertices[0])];
+        const model::Vec3& b = scene->vertices[size_t(p.vertices[1])];
+        const model::Vec3& c = scene->vertices[size_t(p.vertices[2])];
+        const model::Vec3 n = glm::cross(b - a, c - a);
+        const bool inside = glm::dot(glm::cross(b - a, point - a), n) >= 0.0 &&
+                            glm::dot(glm::cross(c - b, point - b), n) >= 0.0 &&
+                            glm::dot(glm::cross(a - c, point - c), n) >= 0.0;
+        if (inside)
+            return int(i);
         const double d = glm::length(p.centroid - point);
         if (d < bestDistance) {
             bestDistance = d;

@@ -109,6 +109,8 @@ private slots:
         QVERIFY(patch >= 0);
         QVERIFY(playback->startFromPatch(patch));
         const solver::Patch& p = prepared.patches[size_t(patch)];
+        // The patch under the point: its triangle holds it.
+        QCOMPARE(playback->patchAt("lamp1.panel.ny", p.centroid), patch);
         // The shooter sits at the patch centroid on its face's plane (ShooterFrame::make).
         const model::Plane plane = model::Plane::fromPointNormal(p.centroid, prepared.properties[size_t(p.properties)].plane.normal);
         compareWithSolver(*playback->order(), prepared, p.centroid, &plane);
