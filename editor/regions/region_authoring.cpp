@@ -123,6 +123,7 @@ RegionAuthoring::RegionAuthoring(SceneDocument* document, Viewport* viewport, Au
         updateBoxesLayer();
         updateActions();
     });
+    connect(viewport, &Viewport::viewChanged, this, &RegionAuthoring::uploadColoursLayer);
 
     if (m_diagnostics) {
         // The fix where a diagnostic has one: right click on a straddling part's entry.
@@ -390,12 +391,25 @@ void RegionAuthoring::updateBoxesLayer()
 
 void RegionAuthoring::updateColoursLayer()
 {
+    m_colouredFaces.clear();
+    if (m_colourByRegion->isChecked())
+        m_colouredFaces = colourFacesByRegion(m_document->scene());
+    uploadColoursLayer();
+}
+
+void RegionAuthoring::uploadColoursLayer()
+{
     const QString name = layerName(kRegionColoursLayer);
     if (!m_colourByRegion->isChecked()) {
         m_viewport->removeLayer(name);
         return;
     }
-    m_viewport->setLayer(name, buildPartsByRegionLayer(m_document->scene()));
+    // Like the viewport's own surfaces: without back faces when it hides them,
+    // so rooms can be looked into from outside.
+    const Camera& camera = m_viewport->camera();
+    const Viewer viewer{camera.eye(), camera.forward(), camera.orthographic()};
+    m_viewport->setLayer(name, buildPartsByRegionLayer(m_colouredFaces,
+                                                       m_viewport->cullBackFaces() ? &viewer : nullptr));
 }
 
 void RegionAuthoring::updatePlanesLayer()

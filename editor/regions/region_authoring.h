@@ -12,6 +12,7 @@
 //    figures before they are accepted (one undo step) or discarded.
 // Every edit is public and works without dialogs, so tests drive the same
 // code paths the menus do.
+#include "editor/regions/region_layers.h"
 #include "model/scene.h"
 #include "solver/region_proposal.h"
 
@@ -84,7 +85,8 @@ signals:
 
 private:
     void updateBoxesLayer();
-    void updateColoursLayer();
+    void updateColoursLayer();   // after a scene change: recolours the faces
+    void uploadColoursLayer();   // after a view change: the faces seen from the front
     void updatePlanesLayer();
 
     SceneDocument* m_document;
@@ -97,6 +99,7 @@ private:
     RegionsDock* m_dock = nullptr;
     std::optional<solver::RegionProposal> m_proposal;
     int m_highlightedPlane = -1;
+    std::vector<ColouredFace> m_colouredFaces;
 
     QAction* m_draw = nullptr;
     QAction* m_aroundSelection = nullptr;

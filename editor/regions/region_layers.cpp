@@ -41,11 +41,10 @@ std::array<model::Vec3, 4> boxFace(const model::Box3& box, int face)
 
 void addQuad(LineList& triangles, const std::array<model::Vec3, 4>& q, const glm::vec4& colour)
 {
+    // One winding: layers are drawn without face culling, so a quad seen from
+    // behind shows as well (a second winding would double its opacity).
     triangles.addTriangle(q[0], q[1], q[2], colour);
     triangles.addTriangle(q[0], q[2], q[3], colour);
-    // Both sides: boxes are seen from inside too, and the layer is not culled.
-    triangles.addTriangle(q[0], q[2], q[1], colour);
-    triangles.addTriangle(q[0], q[3], q[2], colour);
 }
 
 std::vector<model::Vec3> loopOf(const model::Part& part, const model::Face& face)
@@ -108,6 +107,9 @@ int regionHoldingPolygon(const model::Scene& scene, std::span<const model::Vec3>
 ViewportLayer buildRegionBoxesLayer(const model::Scene& scene, const std::vector<std::string>& selected)
 {
     ViewportLayer layer;
+    // Over the scene, without writing depth: a box drawn into the depth
+    // buffer would hide the selection of the parts inside it.
+    layer.depthTest = false;
     layer.offsetTriangles = false;
     layer.order = 10;
     for (size_t r = 0; r < scene.regions.size(); ++r) {
@@ -115,7 +117,7 @@ ViewportLayer buildRegionBoxesLayer(const model::Scene& scene, const std::vector
         const bool isSelected = std::find(selected.begin(), selected.end(), region.id) != selected.end();
         const model::Box3 box = boxOf(region);
         for (int face = 0; face < 6; ++face)
-            addQuad(layer.triangles, boxFace(box, face), regionColour(int(r), isSelected ? 0.22f : 0.10f));
+            addQuad(layer.triangles, boxFace(box, face), regionColour(int(r), isSelected ? 0.14f : 0.07f));
         layer.lines.addBox(box.min, box.max, regionColour(int(r), isSelected ? 1.0f : 0.7f));
     }
     return layer;
@@ -146,28 +148,47 @@ ViewportLayer buildProposalLayer(const std::vector<model::Region>& regions)
     return layer;
 }
 
-ViewportLayer buildPartsByRegionLayer(const model::Scene& scene)
+std::vector<ColouredFace> colourFacesByRegion(const model::Scene& scene)
 {
-    ViewportLayer layer;
-    layer.replacesSurfaces = true;
-    layer.order = -10;
+    std::vector<ColouredFace> faces;
     const model::Vec3 light = glm::normalize(model::Vec3(0.35, 0.85, 0.4));
     for (const model::Object& object : scene.objects)
         for (const model::Part& part : object.parts)
             for (const model::Face& face : part.faces) {
-                const std::vector<model::Vec3> loop = loopOf(part, face);
+                std::vector<model::Vec3> loop = loopOf(part, face);
                 if (loop.size() < 3 || model::polygonArea(loop) < model::kMinFaceArea)
                     continue;
                 const int region = regionHoldingPolygon(scene, loop);
-                glm::vec4 colour = region >= 0 ? regionColour(region) : outsideRegionsColour();
+                const glm::vec4 base = region >= 0 ? regionColour(region) : outsideRegionsColour();
                 const model::Vec3 n = model::polygonNormal(loop);
                 // Two-sided lighting: rooms are seen from inside.
                 const float shade = float(0.55 + 0.45 * std::abs(glm::dot(n, light)));
-                colour = glm::vec4(colour.r * shade, colour.g * shade, colour.b * shade, 1.0f);
-                for (size_t i = 1; i + 1 < loop.size(); ++i)
-                    layer.triangles.addTriangle(loop[0], loop[i], loop[i + 1], colour);
+                faces.push_back({std::move(loop), n, glm::vec4(base.r * shade, base.g * shade, base.b * shade, 1.0f)});
             }
+    return faces;
+}
+
+ViewportLayer buildPartsByRegionLayer(const std::vector<ColouredFace>& faces, const Viewer* viewer)
+{
+    ViewportLayer layer;
+    layer.replacesSurfaces = true;
+    layer.order = -10;
+    for (const ColouredFace& face : faces) {
+        if (viewer) {
+            const model::Vec3 toEye =
+                viewer->orthographic ? -viewer->forward : viewer->eye - face.loop.front();
+            if (glm::dot(face.normal, toEye) <= 0.0)
+                continue;
+        }
+        for (size_t i = 1; i + 1 < face.loop.size(); ++i)
+            layer.triangles.addTriangle(face.loop[0], face.loop[i], face.loop[i + 1], face.colour);
+    }
     return layer;
+}
+
+ViewportLayer buildPartsByRegionLayer(const model::Scene& scene)
+{
+    return buildPartsByRegionLayer(colourFacesByRegion(scene));
 }
 
 RegionalTreeView regionalTreeOf(const model::Scene& scene)
@@ -215,6 +236,7 @@ RegionalTreeView regionalTreeOf(const model::Scene& scene)
 ViewportLayer buildSeparatingPlanesLayer(const RegionalTreeView& view, int highlightedNode)
 {
     ViewportLayer layer;
+    layer.depthTest = false; // as the boxes: planes run through the parts
     layer.offsetTriangles = false;
     layer.order = 5;
     static const glm::vec4 kAxisColour[3] = {{1.0f, 0.35f, 0.3f, 1.0f}, {0.35f, 0.9f, 0.35f, 1.0f},

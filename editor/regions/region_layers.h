@@ -43,8 +43,24 @@ ViewportLayer buildRegionBoxesLayer(const model::Scene& scene, const std::vector
 // Boxes of regions that are not (yet) in the scene: a proposal's, drawn
 // dashed in their own colours on top of the scene.
 ViewportLayer buildProposalLayer(const std::vector<model::Region>& regions);
-// Every face filled with its region's colour (grey outside all), lit by a
-// fixed light so shapes stay readable; replaces the scene's own surfaces.
+// Every face with its region's colour (grey outside all), lit by a fixed
+// light so shapes stay readable. Computed once per scene change; the layer is
+// then rebuilt from it when the view moves (back faces are left out as the
+// viewport leaves them out of its own surfaces).
+struct ColouredFace {
+    std::vector<model::Vec3> loop;
+    model::Vec3 normal{0.0};
+    glm::vec4 colour{1.0f};
+};
+std::vector<ColouredFace> colourFacesByRegion(const model::Scene& scene);
+// Where the faces are seen from, for leaving out the back faces.
+struct Viewer {
+    model::Vec3 eye{0.0};
+    model::Vec3 forward{0.0, 0.0, -1.0};
+    bool orthographic = false;
+};
+// Replaces the scene's own surfaces; with a viewer, faces seen from behind are left out.
+ViewportLayer buildPartsByRegionLayer(const std::vector<ColouredFace>& faces, const Viewer* viewer = nullptr);
 ViewportLayer buildPartsByRegionLayer(const model::Scene& scene);
 
 // An inner node of the regional tree as the solver builds it from the

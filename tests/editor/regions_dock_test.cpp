@@ -262,7 +262,7 @@ private slots:
         f.regions->showPlanesAction()->setChecked(true);
         QVERIFY(f.viewport->hasLayer(name));
         const RegionalTreeView tree = regionalTreeOf(scene);
-        constexpr size_t floatsPerVertex = 7, quadVertices = 4 * 3; // two triangles, both sides
+        constexpr size_t floatsPerVertex = 7, quadVertices = 2 * 3; // two triangles
         QCOMPARE(f.viewport->layer(name)->triangles.vertices().size(),
                  tree.planes.size() * quadVertices * floatsPerVertex);
         // Each quad lies in its plane and inside the scene's extent.
@@ -280,6 +280,7 @@ private slots:
         model::Scene scene = test::smallScene();
         scene.regions[0].max.x = 1.5; // the crate (x 2..2.5) is now outside every region
         RegionFixture f(scene);
+        f.viewport->setCullBackFaces(false);
         f.regions->colourByRegionAction()->setChecked(true);
         const ViewportLayer* layer = f.viewport->layer(QString::fromLatin1(kRegionColoursLayer));
         QVERIFY(layer);
@@ -296,6 +297,16 @@ private slots:
         QCOMPARE(regionHoldingPolygon(scene, loopOf(crate)), -1);
         // Every face is drawn: two triangles per quad face of the four boxes.
         QCOMPARE(layer->triangles.vertices().size(), size_t(4 * 6 * 2 * 3 * 7));
+        f.regions->colourByRegionAction()->setChecked(false);
+        QVERIFY(!f.viewport->hasLayer(QString::fromLatin1(kRegionColoursLayer)));
+
+        // As the viewport's own surfaces: faces seen from behind are left out
+        // when it hides back faces (of a closed box, at most three show).
+        f.viewport->setCullBackFaces(true);
+        f.regions->colourByRegionAction()->setChecked(true);
+        layer = f.viewport->layer(QString::fromLatin1(kRegionColoursLayer));
+        const size_t shown = layer->triangles.vertices().size() / (2 * 3 * 7);
+        QVERIFY2(shown >= 4 && shown <= 4 * 3, qPrintable(QString::number(shown)));
         f.regions->colourByRegionAction()->setChecked(false);
         QVERIFY(!f.viewport->hasLayer(QString::fromLatin1(kRegionColoursLayer)));
     }
