@@ -5,6 +5,7 @@
 #include "editor/commands/part_commands.h"
 #include "editor/commands/region_commands.h"
 #include "editor/regions/region_authoring.h"
+#include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_drag_command.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
@@ -17,6 +18,7 @@
 #include <QAction>
 #include <QLabel>
 #include <QMainWindow>
+#include <QMenu>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -220,6 +222,30 @@ private slots:
         QVERIFY(a.regions->proposeRegions());
         a.document.reset(test::smallScene());
         QVERIFY(!a.regions->proposal());
+    }
+
+    void theRegionsMenuOffersTheToolTheFixesTheProposalAndTheViews()
+    {
+        RegionFixture a(straddlingScene());
+        QMenu menu;
+        a.regions->populateRegionsMenu(&menu);
+        const QList<QAction*> actions = menu.actions();
+        for (QAction* action : {a.regions->drawAction(), a.regions->proposeAction(), a.regions->acceptAction(),
+                                a.regions->discardAction(), a.regions->clipSelectedAction(),
+                                a.regions->showBoxesAction(), a.regions->colourByRegionAction(),
+                                a.regions->showPlanesAction()})
+            QVERIFY2(actions.contains(action), qPrintable(action->text()));
+        QVERIFY(a.regions->drawAction()->isCheckable());
+        // Clipping is offered only for a selection that straddles.
+        a.document.setSelection(Selection::single(SelectionKind::Part, "table.desk"));
+        QVERIFY(!a.regions->clipSelectedAction()->isEnabled());
+        a.document.setSelection(Selection::single(SelectionKind::Object, "crate"));
+        QVERIFY(a.regions->clipSelectedAction()->isEnabled());
+        // The menu's tool action and the viewport's tool stay in step.
+        a.regions->drawAction()->trigger();
+        QVERIFY(a.viewport->tool() == a.regions->tool());
+        a.viewport->setTool(nullptr);
+        QVERIFY(!a.regions->drawAction()->isChecked());
     }
 
     void regionEditsSurviveSaveAndLoad()
