@@ -387,6 +387,51 @@ private slots:
               analysis.baseline->fragments);
     }
 
+    void suggestedOrdersInEveryRegionGiveNoMoreFragmentsThanSceneOrder_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("two-lights-room") << QStringLiteral("two-lights-room");
+        QTest::newRow("furnished room of 100 objects, proposed regions") << QStringLiteral("furnished");
+    }
+
+    void suggestedOrdersInEveryRegionGiveNoMoreFragmentsThanSceneOrder()
+    {
+        QFETCH(QString, name);
+        model::Scene scene;
+        if (name == QStringLiteral("furnished")) {
+            const model::Scene room = test_scenes::furnishedRoom(1);
+            solver::RegionProposalOptions options;
+            options.suggestOrders = false;
+            scene = solver::withRegions(room, solver::proposeRegions(room, options).regions);
+        } else {
+            scene = test::loadSample("two-lights-room.json");
+        }
+        for (model::Region& region : scene.regions)
+            region.bspOrder.clear(); // scene order
+        auto window = makeWindow();
+        test::resetDocument(*window->document(), scene);
+        BspAuthoring* bsp = window->bspAuthoring();
+        bsp->analyser()->refreshNow();
+        const solver::SceneBspFigures sceneOrder = *bsp->analyser()->current().authored;
+        for (const model::Region& region : scene.regions) {
+            bsp->setCurrentRegion(region.id);
+            QVERIFY(bsp->suggestOrder());
+            QVERIFY(bsp->suggestion()->suggested.fragments <= bsp->suggestion()->current.fragments);
+            QVERIFY(bsp->applySuggestion());
+        }
+        QCOMPARE(window->document()->undoStack()->count(), int(scene.regions.size()));
+        bsp->analyser()->refreshNow();
+        const BspAnalysis& suggested = bsp->analyser()->current();
+        QVERIFY(suggested.authored->fragments <= sceneOrder.fragments);
+        QVERIFY(suggested.authored->fragments < suggested.baseline->fragments ||
+                suggested.authored->fragments == sceneOrder.fragments);
+        qInfo("%s, %d regions: scene order %d fragments (%d splits, depth %d); suggested orders %d (%d splits, "
+              "depth %d); single BSP with those orders concatenated %d",
+              qPrintable(name), int(scene.regions.size()), sceneOrder.fragments, sceneOrder.splits,
+              sceneOrder.maxDepth, suggested.authored->fragments, suggested.authored->splits,
+              suggested.authored->maxDepth, suggested.baseline->fragments);
+    }
+
     void theTreeViewShowsTheRegionsBspAndHighlightsTheSelectedNodesPlane()
     {
         auto window = makeWindow();
