@@ -9,10 +9,14 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "solver/region_proposal.h"
 #include "solver/solver.h"
 #include "solver/traversal.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
+
+#include "../solver/furnished_room.h"
 
 #include <memory>
 
@@ -114,6 +118,30 @@ private slots:
         // The shooter sits at the patch centroid on its face's plane (ShooterFrame::make).
         const model::Plane plane = model::Plane::fromPointNormal(p.centroid, prepared.properties[size_t(p.properties)].plane.normal);
         compareWithSolver(*playback->order(), prepared, p.centroid, &plane);
+    }
+
+    void onAHundredObjectRoomInRegionsThePlaybackIsTheSolversTraversal()
+    {
+        const model::Scene room = test_scenes::furnishedRoom(1);
+        const model::Scene scene = solver::withRegions(room, solver::proposeRegions(room).regions);
+        MainWindowOptions options;
+        options.persistent = false;
+        options.interactive = false;
+        options.autosave = false;
+        MainWindow window(options);
+        test::resetDocument(*window.document(), scene);
+        PainterPlayback* playback = window.bspAuthoring()->playback();
+        const model::Vec3 eye(5.3, 1.4, 4.1);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(playback->startFromPoint(eye));
+        const qint64 first = clock.restart();
+        QVERIFY(playback->startFromPoint(eye + model::Vec3(2.0, 0.0, 1.0)));
+        const qint64 again = clock.elapsed();
+        auto solver = solverFor(scene);
+        compareWithSolver(*playback->order(), solver->prepared(), eye + model::Vec3(2.0, 0.0, 1.0), nullptr);
+        qInfo("100-object room, %d regions, %d elements: first playback %lld ms (preparing the scene), next %lld ms",
+              int(scene.regions.size()), playback->stepCount(), first, again);
     }
 
     void steppingShowsThePaintedElementsInOrder()
