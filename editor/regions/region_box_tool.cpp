@@ -92,6 +92,7 @@ void RegionBoxTool::setActive(bool on)
         return;
     }
     m_viewport->setTool(this);
+    m_viewport->setCursor(Qt::CrossCursor);
     m_state = State::Idle;
     updateHandles();
     emit statusMessage(tr("Region tool: drag on the ground or a horizontal face to draw a box; drag a handle of "
@@ -104,6 +105,7 @@ void RegionBoxTool::deactivated()
     m_state = State::Idle;
     m_handle = m_hoverHandle = -1;
     if (m_viewport) {
+        m_viewport->unsetCursor();
         m_viewport->removeLayer(QString::fromLatin1(kRegionHandlesLayer));
         m_viewport->removeLayer(QString::fromLatin1(kRegionDraftLayer));
     }
@@ -241,6 +243,8 @@ bool RegionBoxTool::mouseMove(Viewport& viewport, QMouseEvent* event)
             m_hoverHandle = hover;
             updateHandles();
         }
+        if (event->buttons() == Qt::NoButton) // a handle drags, anywhere else draws
+            viewport.setCursor(hover >= 0 ? Qt::SizeAllCursor : Qt::CrossCursor);
         return false; // the viewport's own hover feedback goes on
     }
     case State::Pressed:

@@ -82,6 +82,7 @@ private slots:
     {
         ShownTool t;
         QVERIFY(t.regions->tool()->isActive());
+        QCOMPARE(t.viewport->cursor().shape(), Qt::CrossCursor);
         t.drag(t.pixelOf({1.2, 0, 0.1}), t.pixelOf({1.8, 0, 0.9}));
         QCOMPARE(t.document.scene().regions.size(), size_t(1));
         QCOMPARE(t.document.undoStack()->count(), 1);
@@ -116,6 +117,8 @@ private slots:
         const model::Vec3 handle = handlePosition(box, 1);
         const QPoint at = t.pixelOf(handle);
         QCOMPARE(t.regions->tool()->handleAt(at.x(), at.y()), 1);
+        QTest::mouseMove(t.viewport, at);
+        QCOMPARE(t.viewport->cursor().shape(), Qt::SizeAllCursor);
 
         t.drag(at, t.pixelOf(handle + model::Vec3(0.4, 0, 0)));
         QVERIFY(near(t.document.scene().findRegion(id)->max.x, 2.2));
@@ -187,6 +190,7 @@ private slots:
         QTest::keyClick(t.viewport, Qt::Key_Escape);
         QVERIFY(!t.regions->tool()->isActive());
         QVERIFY(!t.regions->drawAction()->isChecked());
+        QCOMPARE(t.viewport->cursor().shape(), Qt::ArrowCursor);
     }
 };
 
