@@ -52,10 +52,13 @@
 // Precision: positions are double (the BSP splits and the strip triangulation
 // need it); the rasteriser converts to float in the shooter's frame.
 //
-// Growing the mesh: adaptive subdivision (solver/adaptive_subdivision.h)
-// splits elements at run time. It appends new elements and vertices, turns
-// the split element into one of its children, and rebuilds the pieces
-// (buildPieces); per-element solver arrays grow alongside.
+// Growing the mesh: adaptive subdivision (§5.7, not built yet) is to split
+// elements at run time: append the new elements and vertices, regroup the
+// element array by patch (Patch::firstElement/elementCount stay ranges), let
+// the per-element solver arrays follow the same permutation
+// (Shooting::replaceElementState), rebuild InputFace::elements and then the
+// pieces with buildPieces (solver/pieces.h), which recomputes everything the
+// painter needs from the elements.
 #include "model/geometry.h"
 #include "model/types.h"
 
@@ -137,7 +140,6 @@ struct Element {
     double area = 0.0;
     Vec3 centroid{0.0};
     Vec3 normal{0.0};              // = properties' plane normal (copied for locality)
-    int level = 0;                 // adaptive subdivision depth (0 = as meshed)
 };
 
 // A triangle of an element's part inside one BSP node's cell (see the top of
