@@ -138,14 +138,15 @@ private slots:
         QVERIFY(window->document()->scene() == test::smallScene());
     }
 
-    void theMenusAreFileEditCreateModifyViewHelp()
+    void theMenusAreFileEditCreateModifyRegionsBspViewSolveHelp()
     {
         auto window = makeWindow();
         QStringList titles;
         for (QAction* action : window->menuBar()->actions())
             titles << action->text();
         QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Edit"), QStringLiteral("&Create"),
-                                      QStringLiteral("&Modify"), QStringLiteral("&View"), QStringLiteral("&Help")}));
+                                      QStringLiteral("&Modify"), QStringLiteral("&Regions"), QStringLiteral("&BSP"),
+                                      QStringLiteral("&View"), QStringLiteral("&Solve"), QStringLiteral("&Help")}));
     }
 };
 
