@@ -301,31 +301,47 @@ void AdaptiveMesh::splitNow(int element)
 
 int AdaptiveMesh::subdivide(std::span<const int> elements, double minEdge)
 {
-    int splits = 0;
+    std::vector<int> pending;
     for (int e : elements)
-        if (e >= 0 && e < int(m_levels.size()) && isActive(e))
-            splits += int(split(e, minEdge).size());
+        if (e >= 0 && e < int(m_levels.size()) && isActive(e)) {
+            const std::vector<int> done = split(e, minEdge);
+            pending.insert(pending.end(), done.begin(), done.end());
+        }
+    int splits = int(pending.size());
     if (!m_anchoring)
         return splits;
     // An element with midpoints on all three edges is split: its anchored
-    // fan would be as fine as its children, without their own values.
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (int e : activeElements()) {
-            if (!isActive(e))
-                continue;
-            const FaceTopology& t = m_faces[size_t(faceOf(e))];
-            const auto& v = m_scene.elements[size_t(e)].vertices;
-            int withMidpoint = 0;
-            for (int k = 0; k < 3; ++k)
-                withMidpoint += t.midpoint.count(key(v[size_t(k)], v[size_t((k + 1) % 3)])) ? 1 : 0;
-            if (withMidpoint == 3 && canSplit(e, minEdge)) {
-                splits += int(split(e, minEdge).size());
-                changed = true;
+    // fan would be as fine as its children, without their own values. Only
+    // the neighbours of new children can have gained a midpoint.
+    while (!pending.empty()) {
+        const int parent = pending.back();
+        pending.pop_back();
+        for (int child : m_levels[size_t(parent)].children) {
+            if (!isActive(child))
+                continue; // its own split is pending and covers it
+            for (int n : neighbours(child)) {
+                if (!isActive(n))
+                    continue;
+                const FaceTopology& t = m_faces[size_t(faceOf(n))];
+                const auto& v = m_scene.elements[size_t(n)].vertices;
+                int withMidpoint = 0;
+                for (int k = 0; k < 3; ++k)
+                    withMidpoint += t.midpoint.count(key(v[size_t(k)], v[size_t((k + 1) % 3)])) ? 1 : 0;
+                if (withMidpoint == 3) {
+                    const std::vector<int> done = split(n, minEdge);
+                    pending.insert(pending.end(), done.begin(), done.end());
+                    splits += int(done.size());
+                }
             }
         }
     }
     return splits;
+}
+
+int AdaptiveMesh::refine(std::span<const Rgb> radiosity, const model::AdaptiveSettings& settings)
+{
+    const std::vector<int> selected = selectBySubdivisionCriterion(radiosity, settings.threshold, settings.minEdge);
+    return subdivide(selected, settings.minEdge);
 }
 
 std::vector<int> AdaptiveMesh::selectBySubdivisionCriterion(std::span<const Rgb> radiosity, double threshold,

@@ -32,6 +32,7 @@
 // The shooter needs patches whose elements are contiguous and no inactive
 // element: activeScene() gives that copy (active leaves regrouped by patch,
 // pieces rebuilt with buildPieces) with the map back to this hierarchy.
+#include "model/scene.h"
 #include "solver/prepared_scene.h"
 
 #include <array>
@@ -41,12 +42,6 @@
 #include <vector>
 
 namespace regio::solver {
-
-struct AdaptiveOptions {
-    double threshold = 0.25; // relative luminance difference to an edge neighbour that asks for a split
-    double minEdge = 0.05;   // metres: no element edge gets shorter than this
-    bool anchoring = true;
-};
 
 // Place of an element in the subdivision hierarchy (parallel to
 // PreparedScene::elements). Level 0 = an element of the initial mesh.
@@ -76,6 +71,7 @@ class AdaptiveMesh {
 public:
     // `radiosity` and `unshot` (W/m^2) are per element of `scene`, in its
     // order. The scene is grown in place and must outlive this object.
+    // `anchoring` is model::AdaptiveSettings::anchoring.
     // Throws std::invalid_argument when the counts do not match.
     AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std::vector<Rgb> unshot,
                  bool anchoring = true);
@@ -116,6 +112,11 @@ public:
     // two, and that may still be split. `radiosity` is per hierarchy element.
     std::vector<int> selectBySubdivisionCriterion(std::span<const Rgb> radiosity, double threshold,
                                                   double minEdge) const;
+
+    // One round of §5.7 with the scene's settings (threshold, minEdge; the
+    // anchoring switch is the constructor's): select, then subdivide.
+    // Returns the number of splits (0 = the mesh is settled).
+    int refine(std::span<const Rgb> radiosity, const model::AdaptiveSettings& settings);
 
     // The triangles to paint and export (anchored fans when anchoring is on).
     std::vector<OutputTriangle> outputTriangles() const;

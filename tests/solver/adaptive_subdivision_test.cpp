@@ -14,6 +14,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -367,44 +368,125 @@ TEST(AdaptiveSubdivision, FacesListTheirActiveLeavesAndParentsBecomeInactive)
     }
 }
 
+struct GrownScene {
+    std::string name;
+    PreparedScene scene;
+};
+
+// Sample scenes (faces split by regions and BSP planes) with a diagonal
+// shadow-like step over every face, refined by the §5.7 rounds.
+std::vector<GrownScene> grownSamples(bool anchoring, std::vector<AdaptiveMesh>* meshes = nullptr)
+{
+    std::vector<std::pair<std::string, model::Scene>> inputs{{"cornell-box", test::loadSample("cornell-box.json")},
+                                                             {"two-lights-room", test::loadSample("two-lights-room.json")},
+                                                             {"random 3", test::randomRegionScene(3, 2, 2)}};
+    std::vector<GrownScene> out;
+    out.reserve(inputs.size());
+    for (auto& [name, scene] : inputs) {
+        EXPECT_FALSE(scene.objects.empty()) << name;
+        PrepareResult r = prepareScene(scene);
+        EXPECT_TRUE(r.scene) << name;
+        if (!r.scene)
+            continue;
+        out.push_back({name, std::move(*r.scene)});
+    }
+    for (GrownScene& g : out) {
+        PreparedScene& s = g.scene;
+        const double step = 0.5 * (s.bounds.min.x + s.bounds.max.x + s.bounds.min.y + s.bounds.max.y);
+        const auto field = [&] {
+            std::vector<Rgb> r;
+            for (const Element& e : s.elements)
+                r.push_back(e.centroid.x + e.centroid.y < step ? Rgb{0.2, 0.3, 0.1} : Rgb{2.0, 2.5, 1.0});
+            return r;
+        };
+        AdaptiveMesh mesh(s, field(), std::vector<Rgb>(s.elements.size(), Rgb{0.3, 0.2, 0.1}), anchoring);
+        model::AdaptiveSettings settings;
+        settings.threshold = kThreshold;
+        settings.minEdge = 0.3 * shortestEdge(s, s.elements.front());
+        settings.anchoring = anchoring;
+        int rounds = 0;
+        while (mesh.refine(field(), settings) > 0)
+            ++rounds;
+        EXPECT_GE(rounds, 1) << g.name;
+        if (meshes)
+            meshes->push_back(std::move(mesh));
+    }
+    return out;
+}
+
+TEST(AdaptiveSubdivision, RefiningSampleScenesKeepsEveryFaceConformingAndGraded)
+{
+    std::vector<AdaptiveMesh> meshes;
+    std::vector<GrownScene> grown = grownSamples(true, &meshes);
+    ASSERT_EQ(grown.size(), meshes.size());
+    for (size_t i = 0; i < grown.size(); ++i) {
+        const AdaptiveMesh& mesh = meshes[i];
+        EXPECT_EQ(countTVertices(grown[i].scene, mesh.outputTriangles()), 0) << grown[i].name;
+        int maxLevel = 0;
+        for (int e : mesh.activeElements()) {
+            maxLevel = std::max(maxLevel, mesh.hierarchy()[size_t(e)].level);
+            for (int n : mesh.neighbours(e))
+                EXPECT_LE(std::abs(mesh.hierarchy()[size_t(e)].level - mesh.hierarchy()[size_t(n)].level), 1)
+                    << grown[i].name;
+        }
+        EXPECT_GE(maxLevel, 1) << grown[i].name;
+    }
+}
+
 TEST(AdaptiveSubdivision, TheActiveSceneGroupsElementsByPatchAndItsPiecesCoverEveryElement)
 {
-    model::Scene room = test::loadSample("cornell-box.json");
-    ASSERT_FALSE(room.objects.empty());
-    PrepareResult r = prepareScene(room);
-    ASSERT_TRUE(r.scene);
-    PreparedScene& grown = *r.scene;
-    std::vector<Rgb> radiosity, unshot;
-    for (const Element& e : grown.elements) {
-        // A shadow-like field across every wall: a diagonal step.
-        radiosity.push_back(e.centroid.x + e.centroid.y < 0.6 * (grown.bounds.max.x + grown.bounds.max.y)
-                                ? Rgb{0.2}
-                                : Rgb{2.0});
-        unshot.push_back(Rgb{0.3});
+    for (bool anchoring : {true, false}) {
+        std::vector<AdaptiveMesh> meshes;
+        std::vector<GrownScene> grown = grownSamples(anchoring, &meshes);
+        for (size_t i = 0; i < grown.size(); ++i) {
+            const AdaptiveMesh& mesh = meshes[i];
+            const ActiveScene active = mesh.activeScene();
+            const PreparedScene& a = active.scene;
+            const std::string name = grown[i].name + (anchoring ? " anchored" : " not anchored");
+            ASSERT_EQ(a.elements.size(), mesh.activeElements().size()) << name;
+            EXPECT_GT(a.elements.size(), grown[i].scene.stats.elements) << name;
+            EXPECT_EQ(a.stats.lostPieces, 0) << name;
+            EXPECT_EQ(a.stats.lostPieceArea, 0.0) << name;
+            for (size_t p = 0; p < a.patches.size(); ++p)
+                for (int e = a.patches[p].firstElement; e < a.patches[p].firstElement + a.patches[p].elementCount; ++e)
+                    EXPECT_EQ(a.elements[size_t(e)].patch, int(p)) << name;
+            std::vector<double> pieceArea(a.elements.size(), 0.0);
+            for (const Piece& piece : a.pieces) {
+                const Vec3 p0 = a.pieceVertices[size_t(piece.vertices[0])], p1 = a.pieceVertices[size_t(piece.vertices[1])],
+                           p2 = a.pieceVertices[size_t(piece.vertices[2])];
+                pieceArea[size_t(piece.element)] += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
+            }
+            for (size_t e = 0; e < a.elements.size(); ++e) {
+                const double area = triangleArea(a, a.elements[e].vertices);
+                EXPECT_NEAR(pieceArea[e], area, 1e-9 * area) << name << " element " << e;
+                EXPECT_GE(a.elements[e].node, 0) << name;
+                EXPECT_EQ(active.unshot[e], mesh.unshot()[size_t(active.sourceElement[e])]) << name;
+                EXPECT_EQ(active.radiosity[e], mesh.radiosity()[size_t(active.sourceElement[e])]) << name;
+            }
+            size_t listed = 0;
+            for (const InputFace& f : a.faces)
+                listed += f.elements.size();
+            EXPECT_EQ(listed, a.elements.size()) << name;
+        }
     }
-    AdaptiveMesh mesh(grown, radiosity, unshot, true);
-    const double minEdge = 0.25 * shortestEdge(grown, grown.elements.front());
-    std::vector<int> selected = mesh.selectBySubdivisionCriterion(radiosity, kThreshold, minEdge);
-    ASSERT_FALSE(selected.empty());
-    mesh.subdivide(selected, minEdge);
+}
 
-    const ActiveScene active = mesh.activeScene();
-    const PreparedScene& a = active.scene;
-    ASSERT_EQ(a.elements.size(), mesh.activeElements().size());
-    EXPECT_EQ(a.stats.lostPieces, 0);
-    for (size_t p = 0; p < a.patches.size(); ++p)
-        for (int e = a.patches[p].firstElement; e < a.patches[p].firstElement + a.patches[p].elementCount; ++e)
-            EXPECT_EQ(a.elements[size_t(e)].patch, int(p));
-    std::vector<double> pieceArea(a.elements.size(), 0.0);
-    for (const Piece& piece : a.pieces) {
-        const Vec3 p0 = a.pieceVertices[size_t(piece.vertices[0])], p1 = a.pieceVertices[size_t(piece.vertices[1])],
-                   p2 = a.pieceVertices[size_t(piece.vertices[2])];
-        pieceArea[size_t(piece.element)] += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-    }
-    for (size_t e = 0; e < a.elements.size(); ++e) {
-        const double area = triangleArea(a, a.elements[e].vertices);
-        EXPECT_NEAR(pieceArea[e], area, 1e-9 * area) << "element " << e;
-        EXPECT_GE(a.elements[e].node, 0);
-        EXPECT_EQ(active.unshot[e], mesh.unshot()[size_t(active.sourceElement[e])]);
-    }
+TEST(AdaptiveSubdivision, NeighbourLookupAgreesWithGeometryOnEveryFaceOfASampleScene)
+{
+    std::vector<AdaptiveMesh> meshes;
+    std::vector<GrownScene> grown = grownSamples(false, &meshes);
+    ASSERT_FALSE(grown.empty());
+    const PreparedScene& s = grown[0].scene;
+    const AdaptiveMesh& mesh = meshes[0];
+    for (const InputFace& face : s.faces)
+        for (int e : face.elements) {
+            std::vector<int> found = mesh.neighbours(e);
+            std::vector<int> expected;
+            for (int o : face.elements)
+                if (o != e && shareEdgePart(s, s.elements[size_t(e)], s.elements[size_t(o)]))
+                    expected.push_back(o);
+            std::sort(found.begin(), found.end());
+            std::sort(expected.begin(), expected.end());
+            EXPECT_EQ(found, expected) << grown[0].name << " element " << e;
+        }
 }
