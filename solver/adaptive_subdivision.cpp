@@ -159,6 +159,20 @@ void AdaptiveMesh::setState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot)
     m_unshot = std::move(unshot);
 }
 
+void AdaptiveMesh::setActiveState(std::span<const int> sourceElement, std::span<const Rgb> radiosity,
+                                  std::span<const Rgb> unshot)
+{
+    if (radiosity.size() != sourceElement.size() || unshot.size() != sourceElement.size())
+        throw std::invalid_argument("AdaptiveMesh::setActiveState: one value per active element expected");
+    for (size_t i = 0; i < sourceElement.size(); ++i) {
+        const int e = sourceElement[i];
+        if (e < 0 || e >= int(m_levels.size()) || !isActive(e))
+            throw std::invalid_argument("AdaptiveMesh::setActiveState: not an active element of the hierarchy");
+        m_radiosity[size_t(e)] = radiosity[i];
+        m_unshot[size_t(e)] = unshot[i];
+    }
+}
+
 bool AdaptiveMesh::canSplitImpl(int element, double minEdge, int depth) const
 {
     if (!isActive(element) || depth > 64)

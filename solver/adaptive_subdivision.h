@@ -87,6 +87,10 @@ public:
     const std::vector<Rgb>& unshot() const { return m_unshot; }
     // New state after shooting on the active scene, per hierarchy element.
     void setState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot);
+    // The same from the shooter's arrays on an ActiveScene (its element
+    // order): each value goes to the hierarchy element it came from.
+    void setActiveState(std::span<const int> sourceElement, std::span<const Rgb> radiosity,
+                        std::span<const Rgb> unshot);
 
     // Active elements sharing (a part of) the edge k (corner k to corner k+1)
     // of an active element, or any of its edges.

@@ -4,6 +4,7 @@
 #include "solver/adaptive_subdivision.h"
 #include "solver/pieces.h"
 #include "solver/prepare.h"
+#include "solver/shooting.h"
 #include "solver_test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -489,4 +490,53 @@ TEST(AdaptiveSubdivision, NeighbourLookupAgreesWithGeometryOnEveryFaceOfASampleS
             std::sort(expected.begin(), expected.end());
             EXPECT_EQ(found, expected) << grown[0].name << " element " << e;
         }
+}
+
+// The wiring a solver needs, end to end on the real shooter: shoot, grow the
+// hierarchy, swap the scene the shooter refers to for the active scene, hand
+// it the new state, shoot on. The energy books stay exact throughout.
+TEST(AdaptiveSubdivision, ShootingOnTheGrownMeshKeepsTheEnergyBalanceExact)
+{
+    model::Scene room = test::loadSample("cornell-box.json");
+    ASSERT_FALSE(room.objects.empty());
+    PrepareResult r = prepareScene(room);
+    ASSERT_TRUE(r.scene);
+    PreparedScene shot = *r.scene;              // what the shooter sees (active leaves)
+    PreparedScene hierarchy = std::move(*r.scene); // grown by the AdaptiveMesh
+    Shooting shooting(shot, 48, VisibilityMode::Painter);
+    for (int i = 0; i < 6; ++i)
+        ASSERT_EQ(shooting.shoot(), ShotResult::Shot);
+
+    const auto expectBalanced = [](const EnergyBalance& e, const char* when) {
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(e.absorbed[c] + e.unshot[c] + e.escaped[c], e.emitted[c], 1e-12 * e.emitted[c]) << when;
+    };
+    AdaptiveMesh mesh(hierarchy, shooting.radiosity(), shooting.unshotRadiosity(), true);
+    model::AdaptiveSettings settings;
+    settings.threshold = 0.3;
+    settings.minEdge = 0.02;
+    std::vector<int> source(shot.elements.size());
+    for (size_t i = 0; i < source.size(); ++i)
+        source[i] = int(i);
+    for (int round = 0; round < 2; ++round) {
+        const EnergyBalance before = shooting.energy();
+        mesh.setActiveState(source, shooting.radiosity(), shooting.unshotRadiosity());
+        ASSERT_GT(mesh.refine(mesh.radiosity(), settings), 0) << "round " << round;
+        ActiveScene active = mesh.activeScene();
+        EXPECT_EQ(active.scene.stats.lostPieces, 0);
+        shot = std::move(active.scene);
+        source = std::move(active.sourceElement);
+        shooting.replaceElementState(std::move(active.radiosity), std::move(active.unshot));
+        const EnergyBalance after = shooting.energy();
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(after.emitted[c], before.emitted[c]);
+            EXPECT_EQ(after.absorbed[c], before.absorbed[c]);
+            EXPECT_NEAR(after.unshot[c], before.unshot[c], 1e-12 * before.emitted[c]) << "round " << round;
+        }
+        expectBalanced(after, "after growing the mesh");
+        for (int i = 0; i < 4; ++i)
+            ASSERT_EQ(shooting.shoot(), ShotResult::Shot);
+        expectBalanced(shooting.energy(), "after shooting on the grown mesh");
+    }
+    EXPECT_GT(shot.elements.size(), hierarchy.stats.elements);
 }
