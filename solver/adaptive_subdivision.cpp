@@ -194,6 +194,10 @@ bool AdaptiveMesh::canSplitImpl(int element, double minEdge, int depth) const
 
 bool AdaptiveMesh::canSplit(int element, double minEdge) const
 {
+    // Without a positive smallest edge a shadow border would be refined
+    // without end (the scene settings never allow it: model/edit_settings).
+    if (!std::isfinite(minEdge) || minEdge <= 0.0)
+        throw std::invalid_argument("adaptive subdivision: minEdge must be a positive length");
     return element >= 0 && element < int(m_levels.size()) && canSplitImpl(element, minEdge, 0);
 }
 
@@ -363,6 +367,8 @@ std::vector<int> AdaptiveMesh::selectBySubdivisionCriterion(std::span<const Rgb>
 {
     if (radiosity.size() != m_levels.size())
         throw std::invalid_argument("selectBySubdivisionCriterion: one radiosity per hierarchy element expected");
+    if (!std::isfinite(minEdge) || minEdge <= 0.0)
+        throw std::invalid_argument("adaptive subdivision: minEdge must be a positive length");
     std::vector<int> out;
     for (int e : activeElements()) {
         const double le = luminance(radiosity[size_t(e)]);

@@ -102,7 +102,8 @@ public:
 
     // Whether split(element, minEdge) would split it: it is active, its
     // children's edges are at least minEdge long and (anchoring) the grading
-    // splits it needs are allowed too.
+    // splits it needs are allowed too. Throws std::invalid_argument unless
+    // minEdge is a positive length (so do split and the selection).
     bool canSplit(int element, double minEdge) const;
     // Splits the element into 4 (after the grading splits it needs). Returns
     // every element split, in order; empty when refused.

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -183,6 +184,16 @@ TEST(AdaptiveSubdivision, NoElementGetsAnEdgeShorterThanMinEdge)
                 EXPECT_TRUE(mesh.split(e, minEdge).empty()) << "a split below minEdge was not refused";
             }
     }
+}
+
+TEST(AdaptiveSubdivision, ANonPositiveMinEdgeIsRejectedInsteadOfRefiningWithoutEnd)
+{
+    PreparedScene s = floorScene();
+    AdaptiveMesh mesh = makeMesh(s, true);
+    const size_t before = s.elements.size();
+    EXPECT_THROW(mesh.split(0, 0.0), std::invalid_argument);
+    EXPECT_THROW(mesh.selectBySubdivisionCriterion(sampleField(s), kThreshold, -1.0), std::invalid_argument);
+    EXPECT_EQ(s.elements.size(), before);
 }
 
 TEST(AdaptiveSubdivision, WithAnchoringTheOutputHasNoTVerticesAndTheGradingIsTwoToOne)
