@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace regio::editor {
@@ -217,14 +218,20 @@ ViewportLayer buildPainterLayer(const solver::PreparedScene& prepared, const sol
     steps = std::clamp(steps, 0, count);
     for (int i = 0; i < steps; ++i) {
         const solver::PaintStep& step = order.steps[size_t(i)];
-        const solver::Element& e = prepared.elements[size_t(step.element)];
         const glm::vec4 colour = paintStepColour(i, count, step.receives);
-        const auto& v = prepared.vertices;
-        layer.triangles.addTriangle(v[size_t(e.vertices[0])], v[size_t(e.vertices[1])], v[size_t(e.vertices[2])],
-                                    colour);
-        // The back is coloured too: a blocker is seen from behind by definition.
-        layer.triangles.addTriangle(v[size_t(e.vertices[0])], v[size_t(e.vertices[2])], v[size_t(e.vertices[1])],
-                                    colour);
+        auto add = [&](const std::vector<model::Vec3>& v, const std::array<int, 3>& t) {
+            layer.triangles.addTriangle(v[size_t(t[0])], v[size_t(t[1])], v[size_t(t[2])], colour);
+            // The back is coloured too: a blocker is seen from behind by definition.
+            layer.triangles.addTriangle(v[size_t(t[0])], v[size_t(t[2])], v[size_t(t[1])], colour);
+        };
+        // The pieces this step paints: an element cut by a region or BSP
+        // plane is painted in parts, at different steps.
+        if (step.pieceCount > 0 && step.firstPiece >= 0) {
+            for (int p = step.firstPiece; p < step.firstPiece + step.pieceCount; ++p)
+                add(prepared.pieceVertices, prepared.pieces[size_t(p)].vertices);
+        } else {
+            add(prepared.vertices, prepared.elements[size_t(step.element)].vertices);
+        }
     }
     return layer;
 }
