@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>SolverPresets</name>
+    <message>
+        <source>Draft</source>
+        <translation>Náčrt</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>Běžné</translation>
+    </message>
+    <message>
+        <source>Final</source>
+        <translation>Finální</translation>
+    </message>
+    <message>
+        <source>Hemicube: %1 x %1 (sides %1 x %2)</source>
+        <translation>Polokrychle: %1 × %1 (boky %1 × %2)</translation>
+    </message>
+    <message>
+        <source>Patch size: %1 m, %2 elements per patch</source>
+        <translation>Velikost plošky: %1 m, %2 prvků na plošku</translation>
+    </message>
+    <message>
+        <source>Stops after %1 iterations or below %2 % unshot</source>
+        <translation>Skončí po %1 iteracích nebo pod %2 % nevyzářeného výkonu</translation>
+    </message>
+    <message>
+        <source>Visibility: %1; regions: %2</source>
+        <translation>Viditelnost: %1; oblasti: %2</translation>
+    </message>
+    <message>
+        <source>Regions: %1; BSP fragments: %2 (%3 splits, depth %4)</source>
+        <translation>Oblasti: %1; fragmenty BSP: %2 (%3 dělení, hloubka %4)</translation>
+    </message>
+    <message>
+        <source>Patches: %1; elements: %2 (before adaptive subdivision)</source>
+        <translation>Plošky: %1; prvky: %2 (před adaptivním dělením)</translation>
+    </message>
+    <message>
+        <source>Prepared in %1 s</source>
+        <translation>Připraveno za %1 s</translation>
+    </message>
+    <message>
+        <source>The scene cannot be prepared:</source>
+        <translation>Scénu nelze připravit:</translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation>chyba: %1</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>varování: %1</translation>
+    </message>
+</context>
+<context>
     <name>TransformGizmo</name>
     <message>
         <source>Move by (%1, %2, %3) m</source>
@@ -210,6 +265,328 @@
     </message>
 </context>
 <context>
+    <name>regio::editor::BspAuthoring</name>
+    <message>
+        <source>&amp;Suggest Order</source>
+        <translation>&amp;Navrhnout pořadí</translation>
+    </message>
+    <message>
+        <source>Compute a low-split root order for the region and compare it with the current one</source>
+        <translation>Spočítat pořadí kořenů s málo děleními a porovnat je se současným</translation>
+    </message>
+    <message>
+        <source>&amp;Apply Suggested Order</source>
+        <translation>&amp;Použít navržené pořadí</translation>
+    </message>
+    <message>
+        <source>&amp;Discard Suggested Order</source>
+        <translation>&amp;Zahodit navržené pořadí</translation>
+    </message>
+    <message>
+        <source>Show &amp;Fragments</source>
+        <translation>Zobrazit &amp;fragmenty</translation>
+    </message>
+    <message>
+        <source>Draw the region&apos;s BSP fragments: splits orange, region cuts cyan</source>
+        <translation>Kreslit fragmenty BSP oblasti: dělení oranžově, řezy oblastí azurově</translation>
+    </message>
+    <message>
+        <source>&amp;Pick Face to Insert</source>
+        <translation>&amp;Vybrat stěnu k vložení</translation>
+    </message>
+    <message>
+        <source>Click faces in the viewport to add them to the region&apos;s BSP order</source>
+        <translation>Klepnutím na stěny v pohledu je přidáte do pořadí BSP oblasti</translation>
+    </message>
+    <message>
+        <source>Insert &amp;Selected Faces</source>
+        <translation>Vložit vy&amp;brané stěny</translation>
+    </message>
+    <message>
+        <source>Painter Order from &amp;Point…</source>
+        <translation>Malířovo pořadí z &amp;bodu…</translation>
+    </message>
+    <message>
+        <source>Click a surface: the elements are painted in the solver&apos;s back-to-front order from there</source>
+        <translation>Klepněte na povrch: prvky se vykreslí v pořadí řešiče odzadu dopředu z tohoto místa</translation>
+    </message>
+    <message>
+        <source>Painter Order from Pa&amp;tch…</source>
+        <translation>Malířovo pořadí z p&amp;lošky…</translation>
+    </message>
+    <message>
+        <source>Click a surface: the patch there shoots, as in the solver</source>
+        <translation>Klepněte na povrch: ploška v tom místě vyzařuje jako v řešiči</translation>
+    </message>
+    <message>
+        <source>S&amp;top Painter Order</source>
+        <translation>&amp;Ukončit malířovo pořadí</translation>
+    </message>
+    <message>
+        <source>%1 is already in the BSP order of %2</source>
+        <translation>%1 už je v pořadí BSP oblasti %2</translation>
+    </message>
+    <message>
+        <source>%1 is not inside region %2</source>
+        <translation>%1 neleží v oblasti %2</translation>
+    </message>
+    <message>
+        <source>Added %1 to the BSP order of %2</source>
+        <translation>%1 přidáno do pořadí BSP oblasti %2</translation>
+    </message>
+    <message>
+        <source>No selected face can be added to the BSP order of %1</source>
+        <translation>Žádnou vybranou stěnu nelze přidat do pořadí BSP oblasti %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Add %n face(s) to the BSP order of %1</source>
+        <translation>
+            <numerusform>Přidat %n stěnu do pořadí BSP oblasti %1</numerusform>
+            <numerusform>Přidat %n stěny do pořadí BSP oblasti %1</numerusform>
+            <numerusform>Přidat %n stěn do pořadí BSP oblasti %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No suggestion: %1</source>
+        <translation>Žádný návrh: %1</translation>
+    </message>
+    <message>
+        <source>Click faces to add them to the BSP order of %1; Esc ends</source>
+        <translation>Klepnutím na stěny je přidáte do pořadí BSP oblasti %1; Esc končí</translation>
+    </message>
+    <message>
+        <source>Click a surface: its patch shoots</source>
+        <translation>Klepněte na povrch: jeho ploška vyzařuje</translation>
+    </message>
+    <message>
+        <source>Click a surface to paint from there</source>
+        <translation>Klepněte na povrch, odkud se má kreslit</translation>
+    </message>
+    <message>
+        <source>The scene cannot be prepared; see the diagnostics</source>
+        <translation>Scénu nelze připravit; viz diagnostiku</translation>
+    </message>
+    <message numerus="yes">
+        <source>Painter order: %n element(s), back to front</source>
+        <translation>
+            <numerusform>Malířovo pořadí: %n prvek, odzadu dopředu</numerusform>
+            <numerusform>Malířovo pořadí: %n prvky, odzadu dopředu</numerusform>
+            <numerusform>Malířovo pořadí: %n prvků, odzadu dopředu</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::BspOrderDock</name>
+    <message>
+        <source>BSP Order</source>
+        <translation>Pořadí BSP</translation>
+    </message>
+    <message>
+        <source>Region:</source>
+        <translation>Oblast:</translation>
+    </message>
+    <message>
+        <source>The region whose BSP root order is edited (also chosen by selecting a region)</source>
+        <translation>Oblast, jejíž pořadí kořenů BSP se upravuje (volí se i výběrem oblasti)</translation>
+    </message>
+    <message>
+        <source>Faces used as BSP roots, first = root of the region&apos;s tree; drag to reorder</source>
+        <translation>Stěny použité jako kořeny BSP, první = kořen stromu oblasti; přetažením změníte pořadí</translation>
+    </message>
+    <message>
+        <source>Move to Top</source>
+        <translation>Přesunout nahoru</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Odebrat</translation>
+    </message>
+    <message>
+        <source>Pick in Viewport</source>
+        <translation>Vybrat v pohledu</translation>
+    </message>
+    <message>
+        <source>Click faces in the viewport to add them at the end of the order; Esc ends</source>
+        <translation>Klepnutím na stěny v pohledu je přidáte na konec pořadí; Esc končí</translation>
+    </message>
+    <message>
+        <source>Insert Selected</source>
+        <translation>Vložit vybrané</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Oblast</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scéna</translation>
+    </message>
+    <message>
+        <source>Single BSP</source>
+        <translation>Jediný BSP</translation>
+    </message>
+    <message>
+        <source>Suggested region</source>
+        <translation>Navržená oblast</translation>
+    </message>
+    <message>
+        <source>Suggested scene</source>
+        <translation>Navržená scéna</translation>
+    </message>
+    <message>
+        <source>Fragments</source>
+        <translation>Fragmenty</translation>
+    </message>
+    <message>
+        <source>Splits</source>
+        <translation>Dělení</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Hloubka</translation>
+    </message>
+    <message>
+        <source>Fragments after region clipping and BSP splits, polygons split, longest root-to-leaf path; Single BSP is the whole scene as one tree without regions</source>
+        <translation>Fragmenty po ořezu oblastmi a dělení BSP, rozdělené mnohoúhelníky, nejdelší cesta od kořene k listu; Jediný BSP je celá scéna jako jeden strom bez oblastí</translation>
+    </message>
+    <message>
+        <source>Suggest Order</source>
+        <translation>Navrhnout pořadí</translation>
+    </message>
+    <message>
+        <source>Greedy low-split, balanced root order (Thibault and Naylor), shown before it is applied</source>
+        <translation>Hladové vyvážené pořadí kořenů s málo děleními (Thibault a Naylor), zobrazené před použitím</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použít</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodit</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Pořadí</translation>
+    </message>
+    <message>
+        <source>Show fragments and split lines in the viewport</source>
+        <translation>Zobrazit fragmenty a dělicí čáry v pohledu</translation>
+    </message>
+    <message>
+        <source>Root face</source>
+        <translation>Kořenová stěna</translation>
+    </message>
+    <message>
+        <source>The region&apos;s BSP tree: each node&apos;s plane is its root face&apos;s; select a node to see its plane</source>
+        <translation>Strom BSP oblasti: rovina každého uzlu je rovinou jeho kořenové stěny; vyberte uzel a uvidíte jeho rovinu</translation>
+    </message>
+    <message>
+        <source>Tree</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>Pick a point or a patch: the elements are painted in the order the solver&apos;s hemicube paints them from there, back to front (blue first, red last; grey: seen from behind, painted as blockers).</source>
+        <translation>Vyberte bod nebo plošku: prvky se vykreslí v pořadí, v jakém je odtud kreslí polokrychle řešiče, odzadu dopředu (modré první, červené poslední; šedé: viděné zezadu, kreslené jako překážky).</translation>
+    </message>
+    <message>
+        <source>From Point…</source>
+        <translation>Z bodu…</translation>
+    </message>
+    <message>
+        <source>From Patch…</source>
+        <translation>Z plošky…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Zastavit</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Přehrát</translation>
+    </message>
+    <message>
+        <source>Elements painted so far</source>
+        <translation>Dosud vykreslené prvky</translation>
+    </message>
+    <message>
+        <source>Painter Order</source>
+        <translation>Malířovo pořadí</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Updating…</source>
+        <translation>Aktualizuje se…</translation>
+    </message>
+    <message>
+        <source>The scene cannot be prepared: %1</source>
+        <translation>Scénu nelze připravit: %1</translation>
+    </message>
+    <message>
+        <source>Computed by the solver&apos;s preparation in %1 ms</source>
+        <translation>Spočítáno přípravou řešiče za %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>Suggested order: %n root face(s). Apply replaces the region&apos;s order (one undo step).</source>
+        <translation>
+            <numerusform>Navržené pořadí: %n kořenová stěna. Použít nahradí pořadí oblasti (jeden krok zpět).</numerusform>
+            <numerusform>Navržené pořadí: %n kořenové stěny. Použít nahradí pořadí oblasti (jeden krok zpět).</numerusform>
+            <numerusform>Navržené pořadí: %n kořenových stěn. Použít nahradí pořadí oblasti (jeden krok zpět).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No tree for this region</source>
+        <translation>Tato oblast nemá strom</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>back</source>
+        <translation>vzadu</translation>
+    </message>
+    <message>
+        <source>front</source>
+        <translation>vpředu</translation>
+    </message>
+    <message>
+        <source>%1 nodes, depth %2, %3 fragments from %4 polygons</source>
+        <translation>%1 uzlů, hloubka %2, %3 fragmentů z %4 mnohoúhelníků</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>No playback</source>
+        <translation>Žádné přehrávání</translation>
+    </message>
+    <message>
+        <source>From patch %1</source>
+        <translation>Z plošky %1</translation>
+    </message>
+    <message>
+        <source>From point (%1, %2, %3)</source>
+        <translation>Z bodu (%1, %2, %3)</translation>
+    </message>
+    <message>
+        <source>%1 regions walked, %2 culled, %3 nodes, %4 elements</source>
+        <translation>%1 prošlých oblastí, %2 vyřazených, %3 uzlů, %4 prvků</translation>
+    </message>
+    <message>
+        <source>Step %1: element %2 of node %3, receiving</source>
+        <translation>Krok %1: prvek %2 uzlu %3, přijímá</translation>
+    </message>
+    <message>
+        <source>Step %1: element %2 of node %3, blocking (seen from behind)</source>
+        <translation>Krok %1: prvek %2 uzlu %3, stíní (viděn zezadu)</translation>
+    </message>
+</context>
+<context>
     <name>regio::editor::ColourButton</name>
     <message>
         <source>Pick a colour</source>
@@ -249,6 +626,18 @@
     <message>
         <source>--size wants WIDTHxHEIGHT in pixels (64 to 16384), got &quot;%1&quot;</source>
         <translation>--size očekává ŠÍŘKAxVÝŠKA v pixelech (64 až 16384), zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>With --screenshot: solve the radiosity preview with exactly &lt;n&gt; shooting steps first and show it.</source>
+        <translation>S --screenshot: nejprve spočítat náhled radiozity přesně s &lt;n&gt; kroky vyzařování a zobrazit ho.</translation>
+    </message>
+    <message>
+        <source>--preview-iterations wants a number of shooting steps (0 or more), got &quot;%1&quot;</source>
+        <translation>--preview-iterations očekává počet kroků vyzařování (0 nebo více), dostal „%1“</translation>
+    </message>
+    <message>
+        <source>--preview-iterations needs --screenshot</source>
+        <translation>--preview-iterations vyžaduje --screenshot</translation>
     </message>
 </context>
 <context>
@@ -377,6 +766,41 @@
         <source>Clear the scene camera</source>
         <translation>Odstranit kameru scény</translation>
     </message>
+    <message>
+        <source>Clip %1 to regions</source>
+        <translation>Oříznout %1 podle oblastí</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::ConvergenceDock</name>
+    <message>
+        <source>Convergence</source>
+        <translation>Konvergence</translation>
+    </message>
+    <message>
+        <source>unshot</source>
+        <translation>nevyzářeno</translation>
+    </message>
+    <message>
+        <source>absorbed</source>
+        <translation>pohlceno</translation>
+    </message>
+    <message>
+        <source>escaped</source>
+        <translation>uniklo</translation>
+    </message>
+    <message>
+        <source>balance error</source>
+        <translation>chyba bilance</translation>
+    </message>
+    <message>
+        <source>iteration</source>
+        <translation>iterace</translation>
+    </message>
+    <message>
+        <source>fraction of emitted power</source>
+        <translation>podíl vyzářeného výkonu</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::DiagnosticsDock</name>
@@ -434,6 +858,28 @@
     <message>
         <source>Problem</source>
         <translation>Problém</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::HemicubeDialog</name>
+    <message>
+        <source>Hemicube</source>
+        <translation>Polokrychle</translation>
+    </message>
+    <message>
+        <source>Face %1</source>
+        <translation>Stěna %1</translation>
+    </message>
+    <message>
+        <source>Patch %1 of face %2, %3 x %3 pixels: %4 elements seen; %5 % of the form factor escapes, %6 % falls on back faces (black: nothing, grey: back faces).</source>
+        <translation>Ploška %1 stěny %2, %3 × %3 pixelů: viditelných prvků %4; %5 % konfiguračního faktoru uniká, %6 % dopadá na odvrácené stěny (černá: nic, šedá: odvrácené stěny).</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::LegendWidget</name>
+    <message>
+        <source>False colour: luminance of the displayed radiosity, W/m²</source>
+        <translation>Nepravé barvy: jas zobrazené radiozity, W/m²</translation>
     </message>
 </context>
 <context>
@@ -874,6 +1320,22 @@ Soubor na disku zůstal beze změny.</translation>
         <source>Create</source>
         <translation>Vytvořit</translation>
     </message>
+    <message>
+        <source>&amp;Regions</source>
+        <translation>&amp;Oblasti</translation>
+    </message>
+    <message>
+        <source>&amp;BSP</source>
+        <translation>&amp;BSP</translation>
+    </message>
+    <message>
+        <source>&amp;Solve</source>
+        <translation>Ř&amp;ešit</translation>
+    </message>
+    <message>
+        <source>Solve</source>
+        <translation>Řešit</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::MaterialsDock</name>
@@ -983,6 +1445,301 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>A&amp;ngle step:</source>
         <translation>Krok ú&amp;hlu:</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::PreviewController</name>
+    <message>
+        <source>Nothing of the solution under the cursor.</source>
+        <translation>Pod kurzorem není nic z řešení.</translation>
+    </message>
+    <message>
+        <source>The preview cannot solve this scene: %1</source>
+        <translation>Náhled tuto scénu nedokáže vyřešit: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Spustit</translation>
+    </message>
+    <message>
+        <source>Solve the scene as it is now (the preview shows it progressively)</source>
+        <translation>Vyřešit scénu v současném stavu (náhled ji ukazuje postupně)</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pozastavit</translation>
+    </message>
+    <message>
+        <source>Pause the solve, or resume it</source>
+        <translation>Pozastavit řešení nebo v něm pokračovat</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Zastavit</translation>
+    </message>
+    <message>
+        <source>End the solve; the solution stays</source>
+        <translation>Ukončit řešení; řešení zůstane</translation>
+    </message>
+    <message>
+        <source>Rese&amp;t</source>
+        <translation>&amp;Vynulovat</translation>
+    </message>
+    <message>
+        <source>Drop the solution and show the materials again</source>
+        <translation>Zahodit řešení a znovu ukázat materiály</translation>
+    </message>
+    <message>
+        <source>&amp;Live</source>
+        <translation>Ž&amp;ivě</translation>
+    </message>
+    <message>
+        <source>Solve again automatically after a pause in editing</source>
+        <translation>Po přestávce v úpravách automaticky řešit znovu</translation>
+    </message>
+    <message>
+        <source>&amp;Dry Run…</source>
+        <translation>&amp;Zkušební příprava…</translation>
+    </message>
+    <message>
+        <source>List the effective settings and the patch and element counts</source>
+        <translation>Vypsat platná nastavení a počty plošek a prvků</translation>
+    </message>
+    <message>
+        <source>&amp;Inspect</source>
+        <translation>&amp;Prozkoumat</translation>
+    </message>
+    <message>
+        <source>Click a surface of the solution to see its element</source>
+        <translation>Klepnutím na povrch řešení zobrazíte jeho prvek</translation>
+    </message>
+    <message>
+        <source>&amp;Hemicube…</source>
+        <translation>Polo&amp;krychle…</translation>
+    </message>
+    <message>
+        <source>Show the item buffer of the inspected patch</source>
+        <translation>Zobrazit buffer položek zkoumané plošky</translation>
+    </message>
+    <message>
+        <source>Draft</source>
+        <translation>Náčrt</translation>
+    </message>
+    <message>
+        <source>Coarse and fast: for previews while editing</source>
+        <translation>Hrubé a rychlé: pro náhledy během úprav</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>Běžné</translation>
+    </message>
+    <message>
+        <source>The default settings</source>
+        <translation>Výchozí nastavení</translation>
+    </message>
+    <message>
+        <source>Final</source>
+        <translation>Finální</translation>
+    </message>
+    <message>
+        <source>Fine meshes and a large hemicube: for batch solving</source>
+        <translation>Jemné sítě a velká polokrychle: pro dávkové řešení</translation>
+    </message>
+    <message>
+        <source>Export Lit &amp;Model…</source>
+        <translation>Exportovat osvětlený &amp;model…</translation>
+    </message>
+    <message>
+        <source>Write the shown solution as glTF, PLY or OBJ</source>
+        <translation>Zapsat zobrazené řešení jako glTF, PLY nebo OBJ</translation>
+    </message>
+    <message>
+        <source>Export Viewport &amp;Image…</source>
+        <translation>Exportovat &amp;obrázek pohledu…</translation>
+    </message>
+    <message>
+        <source>Save the viewport as a picture</source>
+        <translation>Uložit pohled jako obrázek</translation>
+    </message>
+    <message>
+        <source>Export for &amp;Batch…</source>
+        <translation>Exportovat pro &amp;dávku…</translation>
+    </message>
+    <message>
+        <source>Write a self-contained scene with final settings and the regio-solve command</source>
+        <translation>Zapsat soběstačnou scénu s finálním nastavením a příkazem regio-solve</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Předvolby</translation>
+    </message>
+    <message>
+        <source>iteration %1, unshot %2 %, %3 elements, %4 s</source>
+        <translation>iterace %1, nevyzářeno %2 %, %3 prvků, %4 s</translation>
+    </message>
+    <message>
+        <source>Preview: not solved</source>
+        <translation>Náhled: nevyřešeno</translation>
+    </message>
+    <message>
+        <source>Preview: preparing the scene…</source>
+        <translation>Náhled: příprava scény…</translation>
+    </message>
+    <message>
+        <source>Solving: %1</source>
+        <translation>Řeší se: %1</translation>
+    </message>
+    <message>
+        <source>Solving…</source>
+        <translation>Řeší se…</translation>
+    </message>
+    <message>
+        <source>Paused: %1</source>
+        <translation>Pozastaveno: %1</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Solved: %1</source>
+        <translation>Vyřešeno: %1</translation>
+    </message>
+    <message>
+        <source>Solved</source>
+        <translation>Vyřešeno</translation>
+    </message>
+    <message>
+        <source>Preview: the scene cannot be solved</source>
+        <translation>Náhled: scénu nelze vyřešit</translation>
+    </message>
+    <message>
+        <source> (stale: the scene changed)</source>
+        <translation> (zastaralé: scéna se změnila)</translation>
+    </message>
+    <message>
+        <source>Res&amp;ume</source>
+        <translation>Pokra&amp;čovat</translation>
+    </message>
+    <message>
+        <source>Dry Run</source>
+        <translation>Zkušební příprava</translation>
+    </message>
+    <message>
+        <source>Hemicube</source>
+        <translation>Polokrychle</translation>
+    </message>
+    <message>
+        <source>Patch (or inspect a surface first):</source>
+        <translation>Ploška (nebo nejprve prozkoumejte povrch):</translation>
+    </message>
+    <message>
+        <source>there is no solution to export</source>
+        <translation>není žádné řešení k exportu</translation>
+    </message>
+    <message>
+        <source>the viewport could not be read</source>
+        <translation>pohled nelze přečíst</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>nelze zapsat %1</translation>
+    </message>
+    <message>
+        <source>Export Lit Model</source>
+        <translation>Exportovat osvětlený model</translation>
+    </message>
+    <message>
+        <source>glTF binary (*.glb);;glTF (*.gltf);;PLY (*.ply);;OBJ (*.obj)</source>
+        <translation>glTF binární (*.glb);;glTF (*.gltf);;PLY (*.ply);;OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>Exportováno %1</translation>
+    </message>
+    <message>
+        <source>Export Viewport Image</source>
+        <translation>Exportovat obrázek pohledu</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;JPEG image (*.jpg)</source>
+        <translation>Obrázek PNG (*.png);;Obrázek JPEG (*.jpg)</translation>
+    </message>
+    <message>
+        <source>Export for Batch</source>
+        <translation>Exportovat pro dávku</translation>
+    </message>
+    <message>
+        <source>Regio scene (*.json)</source>
+        <translation>Scéna Regio (*.json)</translation>
+    </message>
+    <message>
+        <source>Wrote %1 with the final preset&apos;s settings. This command, now on the clipboard, solves it and writes the report, the lit model and a picture:
+
+%2</source>
+        <translation>Zapsáno %1 s nastavením finální předvolby. Tento příkaz, nyní ve schránce, ji vyřeší a zapíše zprávu, osvětlený model a obrázek:
+
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::PreviewExport</name>
+    <message>
+        <source>there is no solution to export</source>
+        <translation>není žádné řešení k exportu</translation>
+    </message>
+    <message>
+        <source>%1: unknown model format (use .gltf, .glb, .ply or .obj)</source>
+        <translation>%1: neznámý formát modelu (použijte .gltf, .glb, .ply nebo .obj)</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::PreviewInspector</name>
+    <message>
+        <source>Element %1 of face %2</source>
+        <translation>Prvek %1 stěny %2</translation>
+    </message>
+    <message>
+        <source>Patch: %1; region: %2</source>
+        <translation>Ploška: %1; oblast: %2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>neznámá</translation>
+    </message>
+    <message>
+        <source>Radiosity: %1 W/m²</source>
+        <translation>Radiozita: %1 W/m²</translation>
+    </message>
+    <message>
+        <source>Unshot: %1 W/m²</source>
+        <translation>Nevyzářeno: %1 W/m²</translation>
+    </message>
+    <message>
+        <source>Shown (with ambient): %1 W/m²</source>
+        <translation>Zobrazeno (s ambientní složkou): %1 W/m²</translation>
+    </message>
+    <message>
+        <source>Area: %1 m²</source>
+        <translation>Plocha: %1 m²</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::PreviewRunner</name>
+    <message>
+        <source>the scene could not be prepared</source>
+        <translation>scénu nebylo možné připravit</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::PreviewScreenshot</name>
+    <message>
+        <source>the preview did not finish within %1 s</source>
+        <translation>náhled neskončil do %1 s</translation>
+    </message>
+    <message>
+        <source>the preview failed: %1</source>
+        <translation>náhled selhal: %1</translation>
     </message>
 </context>
 <context>
@@ -1300,6 +2057,323 @@ Soubor na disku zůstal beze změny.</translation>
     </message>
 </context>
 <context>
+    <name>regio::editor::RegionAuthoring</name>
+    <message>
+        <source>&amp;Region Tool</source>
+        <translation>Nástroj &amp;oblasti</translation>
+    </message>
+    <message>
+        <source>Draw a region box in the viewport and resize the selected one by its face handles</source>
+        <translation>Nakreslit kvádr oblasti v pohledu a měnit velikost vybraného tažením úchytů jeho stěn</translation>
+    </message>
+    <message>
+        <source>Region Around &amp;Selection</source>
+        <translation>Oblast kolem &amp;výběru</translation>
+    </message>
+    <message>
+        <source>Add a region box around the selected parts (the whole scene when nothing is selected)</source>
+        <translation>Přidat kvádr oblasti kolem vybraných dílů (celé scény, když není nic vybráno)</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Region…</source>
+        <translation>Pře&amp;jmenovat oblast…</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Region</source>
+        <translation>&amp;Smazat oblast</translation>
+    </message>
+    <message>
+        <source>&amp;Clip Selected Parts to Regions</source>
+        <translation>&amp;Oříznout vybrané díly podle oblastí</translation>
+    </message>
+    <message>
+        <source>Cut each selected part that straddles region boundaries into one piece per region</source>
+        <translation>Rozříznout každý vybraný díl přesahující hranice oblastí na jeden kus v každé oblasti</translation>
+    </message>
+    <message>
+        <source>&amp;Propose Automatic Regions</source>
+        <translation>&amp;Navrhnout automatické oblasti</translation>
+    </message>
+    <message>
+        <source>Suggest region boxes whose planes pass between the parts, with their BSP figures</source>
+        <translation>Navrhnout kvádry oblastí, jejichž roviny procházejí mezi díly, s jejich údaji BSP</translation>
+    </message>
+    <message>
+        <source>&amp;Accept Proposed Regions</source>
+        <translation>&amp;Přijmout navržené oblasti</translation>
+    </message>
+    <message>
+        <source>Replace the scene&apos;s regions by the proposed ones</source>
+        <translation>Nahradit oblasti scény navrženými</translation>
+    </message>
+    <message>
+        <source>D&amp;iscard Proposed Regions</source>
+        <translation>&amp;Zahodit navržené oblasti</translation>
+    </message>
+    <message>
+        <source>Show Region &amp;Boxes</source>
+        <translation>Zobrazit &amp;kvádry oblastí</translation>
+    </message>
+    <message>
+        <source>&amp;Colour Parts by Region</source>
+        <translation>&amp;Obarvit díly podle oblasti</translation>
+    </message>
+    <message>
+        <source>Each face in its region&apos;s colour; grey outside every region</source>
+        <translation>Každá stěna v barvě své oblasti; šedě mimo všechny oblasti</translation>
+    </message>
+    <message>
+        <source>Show &amp;Separating Planes</source>
+        <translation>Zobrazit &amp;dělicí roviny</translation>
+    </message>
+    <message>
+        <source>The planes of the solver&apos;s regional tree between the region boxes</source>
+        <translation>Roviny regionálního stromu řešiče mezi kvádry oblastí</translation>
+    </message>
+    <message>
+        <source>The scene changed: the proposed regions were discarded</source>
+        <translation>Scéna se změnila: navržené oblasti byly zahozeny</translation>
+    </message>
+    <message>
+        <source>Clip Part to Regions</source>
+        <translation>Oříznout díl podle oblastí</translation>
+    </message>
+    <message>
+        <source>Cut the straddling part into one piece per region</source>
+        <translation>Rozříznout přesahující díl na jeden kus v každé oblasti</translation>
+    </message>
+    <message>
+        <source>The scene is empty: draw a region with the region tool</source>
+        <translation>Scéna je prázdná: nakreslete oblast nástrojem oblasti</translation>
+    </message>
+    <message>
+        <source>No selected part straddles a region boundary</source>
+        <translation>Žádný vybraný díl nepřesahuje hranici oblasti</translation>
+    </message>
+    <message numerus="yes">
+        <source>Clip %n part(s) to regions</source>
+        <translation>
+            <numerusform>Oříznout %n díl podle oblastí</numerusform>
+            <numerusform>Oříznout %n díly podle oblastí</numerusform>
+            <numerusform>Oříznout %n dílů podle oblastí</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Clipped to regions: %n piece(s)</source>
+        <translation>
+            <numerusform>Oříznuto podle oblastí: %n kus</numerusform>
+            <numerusform>Oříznuto podle oblastí: %n kusy</numerusform>
+            <numerusform>Oříznuto podle oblastí: %n kusů</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no regions could be proposed</source>
+        <translation>nebylo možné navrhnout žádné oblasti</translation>
+    </message>
+    <message>
+        <source>No proposal: %1</source>
+        <translation>Žádný návrh: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;Proposed: %n region(s)&lt;/b&gt;</source>
+        <translation>
+            <numerusform>&lt;b&gt;Navrženo: %n oblast&lt;/b&gt;</numerusform>
+            <numerusform>&lt;b&gt;Navrženo: %n oblasti&lt;/b&gt;</numerusform>
+            <numerusform>&lt;b&gt;Navrženo: %n oblastí&lt;/b&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 fragments, %2 splits, depth %3</source>
+        <translation>%1 fragmentů, %2 dělení, hloubka %3</translation>
+    </message>
+    <message>
+        <source>Current regions: %1 fragments, %2 splits</source>
+        <translation>Současné oblasti: %1 fragmentů, %2 dělení</translation>
+    </message>
+    <message>
+        <source>Single BSP: %1 fragments, %2 splits</source>
+        <translation>Jediný BSP: %1 fragmentů, %2 dělení</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) cross the proposed planes; after accepting, clip them from the Diagnostics panel or the Regions menu.</source>
+        <translation>
+            <numerusform>%n díl protíná navržené roviny; po přijetí ho ořízněte z panelu Diagnostika nebo z nabídky Oblasti.</numerusform>
+            <numerusform>%n díly protínají navržené roviny; po přijetí je ořízněte z panelu Diagnostika nebo z nabídky Oblasti.</numerusform>
+            <numerusform>%n dílů protíná navržené roviny; po přijetí je ořízněte z panelu Diagnostika nebo z nabídky Oblasti.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Proposed %n region(s): accept or discard them in the Regions panel</source>
+        <translation>
+            <numerusform>Navržena %n oblast: přijměte ji nebo zahoďte v panelu Oblasti</numerusform>
+            <numerusform>Navrženy %n oblasti: přijměte je nebo zahoďte v panelu Oblasti</numerusform>
+            <numerusform>Navrženo %n oblastí: přijměte je nebo zahoďte v panelu Oblasti</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Accept %n proposed region(s)</source>
+        <translation>
+            <numerusform>Přijmout %n navrženou oblast</numerusform>
+            <numerusform>Přijmout %n navržené oblasti</numerusform>
+            <numerusform>Přijmout %n navržených oblastí</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Accepted %n region(s)</source>
+        <translation>
+            <numerusform>Přijata %n oblast</numerusform>
+            <numerusform>Přijaty %n oblasti</numerusform>
+            <numerusform>Přijato %n oblastí</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::RegionBoxTool</name>
+    <message>
+        <source>Region tool: drag on the ground or a horizontal face to draw a box; drag a handle of the selected region to resize it; Esc leaves the tool</source>
+        <translation>Nástroj oblasti: tažením po zemi nebo vodorovné stěně nakreslíte kvádr; tažením úchytu vybrané oblasti změníte její velikost; Esc nástroj opustí</translation>
+    </message>
+    <message>
+        <source>Aim at the ground grid or a horizontal face to start a region</source>
+        <translation>Oblast začněte na mřížce země nebo na vodorovné stěně</translation>
+    </message>
+    <message>
+        <source>Region %1 × %2 × %3 m</source>
+        <translation>Oblast %1 × %2 × %3 m</translation>
+    </message>
+    <message>
+        <source>Region %1: %2 %3 = %4 m</source>
+        <translation>Oblast %1: %2 %3 = %4 m</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>Region drawing cancelled</source>
+        <translation>Kreslení oblasti zrušeno</translation>
+    </message>
+    <message>
+        <source>The box is too thin; drag a larger rectangle</source>
+        <translation>Kvádr je příliš tenký; táhněte větší obdélník</translation>
+    </message>
+    <message>
+        <source>Added region %1</source>
+        <translation>Přidána oblast %1</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::RegionsDock</name>
+    <message>
+        <source>Regions</source>
+        <translation>Oblasti</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Oblast</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Parts</source>
+        <translation>Díly</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>Stěny</translation>
+    </message>
+    <message>
+        <source>Fragments</source>
+        <translation>Fragmenty</translation>
+    </message>
+    <message>
+        <source>Polygons in the region&apos;s BSP tree after clipping and splitting, as the solver builds it (fewer is better)</source>
+        <translation>Mnohoúhelníky ve stromu BSP oblasti po ořezu a dělení, jak jej sestaví řešič (méně je lépe)</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Uzel</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Strana</translation>
+    </message>
+    <message>
+        <source>Regional Tree</source>
+        <translation>Regionální strom</translation>
+    </message>
+    <message>
+        <source>Accept</source>
+        <translation>Přijmout</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodit</translation>
+    </message>
+    <message>
+        <source>min %1, max %2</source>
+        <translation>min %1, max %2</translation>
+    </message>
+    <message>
+        <source>Overlaps %1: regions must not share volume</source>
+        <translation>Překrývá %1: oblasti nesmějí sdílet objem</translation>
+    </message>
+    <message>
+        <source>Computing BSP figures…</source>
+        <translation>Počítají se údaje BSP…</translation>
+    </message>
+    <message>
+        <source>No BSP figures: the solver cannot prepare this scene (see Diagnostics).</source>
+        <translation>Žádné údaje BSP: řešič tuto scénu nedokáže připravit (viz Diagnostika).</translation>
+    </message>
+    <message>
+        <source>No regions: one BSP tree, %1 fragments, %2 splits, depth %3.</source>
+        <translation>Bez oblastí: jeden strom BSP, %1 fragmentů, %2 dělení, hloubka %3.</translation>
+    </message>
+    <message>
+        <source>%1 regions: %2 fragments, %3 splits, depth %4.</source>
+        <translation>Oblastí: %1; %2 fragmentů, %3 dělení, hloubka %4.</translation>
+    </message>
+    <message>
+        <source>Single BSP: %1 fragments, %2 splits, depth %3.</source>
+        <translation>Jediný BSP: %1 fragmentů, %2 dělení, hloubka %3.</translation>
+    </message>
+    <message>
+        <source>(updating…)</source>
+        <translation>(aktualizuje se…)</translation>
+    </message>
+    <message>
+        <source>No regions: the whole scene is one BSP tree</source>
+        <translation>Bez oblastí: celá scéna je jeden strom BSP</translation>
+    </message>
+    <message>
+        <source>No regional tree: the region boxes overlap or cannot be separated</source>
+        <translation>Žádný regionální strom: kvádry oblastí se překrývají nebo je nelze oddělit</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>front (%1 ≥ %2)</source>
+        <translation>vpředu (%1 ≥ %2)</translation>
+    </message>
+    <message>
+        <source>back (%1 ≤ %2)</source>
+        <translation>vzadu (%1 ≤ %2)</translation>
+    </message>
+</context>
+<context>
     <name>regio::editor::SceneDocument</name>
     <message>
         <source>Untitled</source>
@@ -1369,6 +2443,157 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>cannot write %1: %2</source>
         <translation>nelze zapsat %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::SolverDock</name>
+    <message>
+        <source>Solver</source>
+        <translation>Řešič</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Nastavení</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Vlastní</translation>
+    </message>
+    <message>
+        <source>Preset:</source>
+        <translation>Předvolba:</translation>
+    </message>
+    <message>
+        <source>Resolution of the hemicube&apos;s top face (the sides are half as high)</source>
+        <translation>Rozlišení horní stěny polokrychle (boky jsou poloviční výšky)</translation>
+    </message>
+    <message>
+        <source>Hemicube:</source>
+        <translation>Polokrychle:</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Patch size:</source>
+        <translation>Velikost plošky:</translation>
+    </message>
+    <message>
+        <source>Elements per patch:</source>
+        <translation>Prvků na plošku:</translation>
+    </message>
+    <message>
+        <source>Adaptive subdivision</source>
+        <translation>Adaptivní dělení</translation>
+    </message>
+    <message>
+        <source>Relative radiosity difference to a neighbour that splits an element</source>
+        <translation>Relativní rozdíl radiozity vůči sousedovi, při kterém se prvek rozdělí</translation>
+    </message>
+    <message>
+        <source>Threshold:</source>
+        <translation>Práh:</translation>
+    </message>
+    <message>
+        <source>Minimum edge:</source>
+        <translation>Nejkratší hrana:</translation>
+    </message>
+    <message>
+        <source>Anchor T-vertices</source>
+        <translation>Ukotvit T-vrcholy</translation>
+    </message>
+    <message>
+        <source>Maximum iterations:</source>
+        <translation>Nejvýše iterací:</translation>
+    </message>
+    <message>
+        <source>Stop when the unshot power falls below this fraction of the emitted power</source>
+        <translation>Skončit, když nevyzářený výkon klesne pod tento podíl vyzářeného výkonu</translation>
+    </message>
+    <message>
+        <source>Convergence:</source>
+        <translation>Konvergence:</translation>
+    </message>
+    <message>
+        <source>Painter (no z-buffer)</source>
+        <translation>Malíř (bez z-bufferu)</translation>
+    </message>
+    <message>
+        <source>Z-buffer</source>
+        <translation>Z-buffer</translation>
+    </message>
+    <message>
+        <source>Visibility:</source>
+        <translation>Viditelnost:</translation>
+    </message>
+    <message>
+        <source>Authored</source>
+        <translation>Autorské</translation>
+    </message>
+    <message>
+        <source>None (one BSP tree)</source>
+        <translation>Žádné (jeden strom BSP)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatické</translation>
+    </message>
+    <message>
+        <source>Regions:</source>
+        <translation>Oblasti:</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Zobrazení</translation>
+    </message>
+    <message>
+        <source> EV</source>
+        <translation> EV</translation>
+    </message>
+    <message>
+        <source>Exposure:</source>
+        <translation>Expozice:</translation>
+    </message>
+    <message>
+        <source>Gamma:</source>
+        <translation>Gama:</translation>
+    </message>
+    <message>
+        <source>Ambient term</source>
+        <translation>Ambientní složka</translation>
+    </message>
+    <message>
+        <source>Show the not yet shot energy as a uniform ambient light (Cohen et al. 1988)</source>
+        <translation>Zobrazit dosud nevyzářenou energii jako rovnoměrné okolní světlo (Cohen a kol. 1988)</translation>
+    </message>
+    <message>
+        <source>False colour</source>
+        <translation>Nepravé barvy</translation>
+    </message>
+    <message>
+        <source>Logarithmic</source>
+        <translation>Logaritmická</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineární</translation>
+    </message>
+    <message>
+        <source>Element mesh</source>
+        <translation>Síť prvků</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Turn on Inspect and click a surface of the solution.</source>
+        <translation>Zapněte Prozkoumat a klepněte na povrch řešení.</translation>
+    </message>
+    <message>
+        <source>White at exposure 0: %1 W/m²</source>
+        <translation>Bílá při expozici 0: %1 W/m²</translation>
     </message>
 </context>
 <context>
