@@ -104,6 +104,10 @@ private slots:
         runner.start(test::loadSample(sample.toStdString()), iterations);
         QVERIFY(waitForFinal(runner));
         QVERIFY(runner.frame());
+        if (runner.frame()->snapshot.stats.iterations != iterations)
+            qWarning("history %d points, stop %s, %d elements", int(runner.frame()->history.size()),
+                     solver::stopReasonName(runner.frame()->snapshot.stats.stop),
+                     runner.frame()->snapshot.stats.elements);
         QCOMPARE(runner.frame()->snapshot.stats.iterations, iterations);
         const std::vector<solver::FaceResult> preview = faceMeans(runner.frame()->snapshot);
 
