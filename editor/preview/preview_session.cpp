@@ -142,8 +142,20 @@ void PreviewSession::publish(bool running)
         }
         for (const solver::Region& r : prepared.regions)
             frame->regionIds.push_back(r.id);
-        frame->lit = std::make_shared<solver::LitMesh>(solver::smoothLitMesh(prepared, radiosity));
+        // Smooth vertex radiosity costs about 5 us per element: on meshes that
+        // adaptive subdivision grew large it would space frames far beyond
+        // 250 ms, so while shooting such meshes show flat elements and only
+        // the final frame (paused, stopped, finished) is smooth.
+        if (!running || m_smoothSeconds < kSmoothBudgetSeconds) {
+            const auto smoothStart = std::chrono::steady_clock::now();
+            frame->lit = std::make_shared<solver::LitMesh>(solver::smoothLitMesh(prepared, radiosity));
+            m_smoothSeconds = secondsSince(smoothStart);
+        } else {
+            frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(prepared, radiosity));
+            frame->smooth = false;
+        }
     } else {
+        frame->smooth = false;
         frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(frame->snapshot));
     }
     frame->buildSeconds = secondsSince(begin);

@@ -52,6 +52,7 @@ struct PreviewFrame {
     double elapsedSeconds = 0.0; // since the session started (preparation included)
     bool running = false;        // false: paused, stopped or finished when it was made
     double buildSeconds = 0.0;   // making this frame on the worker (snapshot, smooth lit mesh)
+    bool smooth = true;          // smooth vertex radiosity (§6); false: flat elements
 };
 
 enum class SessionEvent { Frame, Paused, Finished, Failed, Hemicube };
@@ -125,6 +126,8 @@ private:
     std::atomic<bool> m_exited{false};
     std::atomic<bool> m_framePending{false};
     std::chrono::steady_clock::time_point m_lastPublish;
+    static constexpr double kSmoothBudgetSeconds = 0.08;
+    double m_smoothSeconds = 0.0; // the last smooth build (worker thread only)
     static inline std::atomic<int> s_live{0};
     std::thread m_thread; // last member: starts after everything above exists
 };

@@ -187,6 +187,7 @@ private slots:
         scene.solver.maxIterations = 100000;
         scene.solver.convergence = 1e-9;
         scene.solver.patchSize = 0.3;
+        scene.solver.adaptive.enabled = false; // see longSample() in preview_runner_test.cpp
         auto window = showWindow(scene, {640, 480});
         PreviewController* preview = window->preview();
         int frames = 0;
