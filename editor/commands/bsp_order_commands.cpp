@@ -9,7 +9,7 @@ namespace regio::editor {
 SetBspOrder::SetBspOrder(SceneDocument* document, std::string regionId, std::vector<std::string> order)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Set BSP order of %1")
                                 .arg(toQString(regionId)),
-                  Change::Regions, std::move(regionId), std::move(order))
+                  Change::Regions, regionId, order)
 {
 }
 

@@ -77,7 +77,7 @@ void RenameMaterial::undo()
 SetMaterialName::SetMaterialName(SceneDocument* document, std::string materialId, std::string name)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
                                 .arg(toQString(materialId), toQString(name)),
-                  Change::Materials, std::move(materialId), std::move(name), SetMaterialNameId)
+                  Change::Materials, materialId, name, SetMaterialNameId)
 {
 }
 
@@ -91,7 +91,7 @@ SetMaterialReflectance::SetMaterialReflectance(SceneDocument* document, std::str
                                                const model::Rgb& reflectance)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Reflectance of %1")
                                 .arg(toQString(materialId)),
-                  Change::Materials, std::move(materialId), reflectance, SetMaterialReflectanceId)
+                  Change::Materials, materialId, reflectance, SetMaterialReflectanceId)
 {
 }
 
@@ -105,7 +105,7 @@ SetMaterialEmission::SetMaterialEmission(SceneDocument* document, std::string ma
                                          const model::Rgb& emission)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Emission of %1")
                                 .arg(toQString(materialId)),
-                  Change::Materials, std::move(materialId), emission, SetMaterialEmissionId)
+                  Change::Materials, materialId, emission, SetMaterialEmissionId)
 {
 }
 

@@ -125,7 +125,7 @@ void RenameObject::undo()
 SetObjectName::SetObjectName(SceneDocument* document, std::string objectId, std::string name)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
                                 .arg(toQString(objectId), toQString(name)),
-                  Change::Objects, std::move(objectId), std::move(name), SetObjectNameId)
+                  Change::Objects, objectId, name, SetObjectNameId)
 {
 }
 

@@ -122,7 +122,7 @@ void RenamePart::undo()
 SetPartName::SetPartName(SceneDocument* document, std::string partId, std::string name)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
                                 .arg(toQString(partId), toQString(name)),
-                  Change::Objects, std::move(partId), std::move(name), SetPartNameId)
+                  Change::Objects, partId, name, SetPartNameId)
 {
 }
 
@@ -135,7 +135,7 @@ model::Result<std::string> SetPartName::set(model::Scene& scene, const std::stri
 SetPartMaterial::SetPartMaterial(SceneDocument* document, std::string partId, std::string material)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Material of %1: %2")
                                 .arg(toQString(partId), toQString(material)),
-                  Change::Objects, std::move(partId), std::move(material))
+                  Change::Objects, partId, material)
 {
 }
 
@@ -152,7 +152,7 @@ SetFaceMaterial::SetFaceMaterial(SceneDocument* document, std::string faceId, st
                             .arg(toQString(faceId))
                       : QCoreApplication::translate("regio::editor::Commands", "Material of %1: %2")
                             .arg(toQString(faceId), toQString(material)),
-                  Change::Objects, std::move(faceId), std::move(material))
+                  Change::Objects, faceId, material)
 {
 }
 

@@ -77,7 +77,7 @@ void RenameRegion::undo()
 SetRegionName::SetRegionName(SceneDocument* document, std::string regionId, std::string name)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
                                 .arg(toQString(regionId), toQString(name)),
-                  Change::Regions, std::move(regionId), std::move(name), SetRegionNameId)
+                  Change::Regions, regionId, name, SetRegionNameId)
 {
 }
 
@@ -91,7 +91,7 @@ SetRegionBox::SetRegionBox(SceneDocument* document, std::string regionId, const 
                            const model::Vec3& max)
     : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Resize region %1")
                                 .arg(toQString(regionId)),
-                  Change::Regions, std::move(regionId), model::RegionBox{min, max}, SetRegionBoxId)
+                  Change::Regions, regionId, model::RegionBox{min, max}, SetRegionBoxId)
 {
 }
 

@@ -24,6 +24,18 @@ private slots:
         VERIFY_UNDO_REDO(document, before);
     }
 
+    void valueChangesNameTheirMaterialInTheHistory()
+    {
+        SceneDocument document;
+        const std::string id = test::smallScene().materials.front().id;
+        SetMaterialReflectance reflectance(&document, id, {0.2, 0.2, 0.2});
+        SetMaterialEmission emission(&document, id, {1.0, 1.0, 1.0});
+        SetMaterialName name(&document, id, "Plaster");
+        for (const QUndoCommand* command : std::initializer_list<const QUndoCommand*>{&reflectance, &emission, &name})
+            QVERIFY2(command->text().contains(QString::fromStdString(id)), qPrintable(command->text()));
+        QVERIFY(name.text().contains(QStringLiteral("Plaster")));
+    }
+
     void aMaterialWithReflectanceOfOneIsRefused()
     {
         SceneDocument document;
