@@ -228,6 +228,10 @@ namespace {
 // three midpoint values) is `mean`. Returned at the four child centroids.
 std::array<double, 4> childValues(double mean, std::array<double, 3> mid)
 {
+    // A parent at zero (or a rounding hair below it) has no gradient worth
+    // keeping, and the scaling below needs mean > 0 to stay finite.
+    if (!(mean > 0.0))
+        return {mean, mean, mean, mean};
     const double shift = mean - (mid[0] + mid[1] + mid[2]) / 3.0;
     for (double& m : mid)
         m += shift;

@@ -316,6 +316,27 @@ TEST(AdaptiveSubdivision, ChildrenInterpolateTowardsTheBrighterNeighbour)
     EXPECT_GT(hi, lo);
 }
 
+TEST(AdaptiveSubdivision, AParentAtOrSlightlyBelowZeroGivesFiniteChildrenWithItsValue)
+{
+    // Shooting can leave a channel a rounding hair below zero; the children's
+    // gradient scaling must not divide by zero there.
+    PreparedScene s = floorScene();
+    std::vector<Rgb> radiosity(s.elements.size(), Rgb{0.0, -1e-18, 0.0});
+    radiosity[1] = Rgb{5.0, 4.0, 3.0}; // a bright neighbour somewhere
+    AdaptiveMesh mesh(s, radiosity, std::vector<Rgb>(s.elements.size(), Rgb{0.0}), false);
+    for (int e : mesh.activeElements())
+        if (e != 1 && mesh.canSplit(e, kMinEdge))
+            mesh.split(e, kMinEdge);
+    for (int e : mesh.activeElements()) {
+        const Rgb& b = mesh.radiosity()[size_t(e)];
+        EXPECT_TRUE(std::isfinite(b.x) && std::isfinite(b.y) && std::isfinite(b.z)) << "element " << e;
+        if (mesh.hierarchy()[size_t(e)].parent >= 0 && mesh.hierarchy()[size_t(e)].parent != 1) {
+            EXPECT_EQ(b.x, 0.0);
+            EXPECT_EQ(b.y, -1e-18);
+        }
+    }
+}
+
 TEST(AdaptiveSubdivision, MidpointsAreSharedWithTheNeighbourAcrossTheEdge)
 {
     PreparedScene s = floorScene();
