@@ -11,6 +11,7 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 #include "model/scene_json.h"
 
 #include "../cli/command_run.h"
@@ -35,14 +36,7 @@ using namespace regio::editor;
 
 namespace {
 
-std::unique_ptr<MainWindow> makeWindow()
-{
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    return std::make_unique<MainWindow>(options);
-}
+std::unique_ptr<MainWindow> makeWindow() { return test::quietWindow(); }
 
 std::vector<std::string> orderOf(const SceneDocument& document, const std::string& region)
 {

@@ -10,6 +10,7 @@
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 #include "model/region_clip.h"
 #include "solver/painter_order.h"
 #include "solver/solver.h"
@@ -29,19 +30,11 @@ namespace {
 
 std::unique_ptr<MainWindow> showWindow(const QString& scene)
 {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    auto window = std::make_unique<MainWindow>(options);
+    auto window = test::quietWindow();
     window->resize(1200, 800);
     if (!window->openFile(scene))
         qFatal("cannot open %s", qPrintable(scene));
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qFatal("the window was never exposed");
-    if (!QTest::qWaitFor([&] { return window->viewport()->hasRenderedFrame(); }, 20000))
-        qFatal("the viewport never rendered a frame");
+    test::showAndWaitForFrame(*window);
     return window;
 }
 

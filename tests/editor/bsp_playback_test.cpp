@@ -9,6 +9,7 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 #include "solver/region_proposal.h"
 #include "solver/solver.h"
 #include "solver/traversal.h"
@@ -27,11 +28,7 @@ namespace {
 
 std::unique_ptr<MainWindow> makeWindow(const QString& scene)
 {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    auto window = std::make_unique<MainWindow>(options);
+    auto window = test::quietWindow();
     if (!window->openFile(scene))
         qFatal("cannot open %s", qPrintable(scene));
     return window;

@@ -11,6 +11,7 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 #include "model/edit_materials.h"
 
 #include <QApplication>
@@ -32,35 +33,19 @@ namespace {
 
 std::unique_ptr<MainWindow> showWindow(const model::Scene& scene, QSize size = {900, 650})
 {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    auto window = std::make_unique<MainWindow>(options);
+    auto window = test::quietWindow();
     window->resize(size);
     window->document()->reset(scene);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qFatal("the window was never exposed");
-    if (!QTest::qWaitFor([&] { return window->viewport()->hasRenderedFrame(); }, 20000))
-        qFatal("the viewport never rendered a frame");
+    test::showAndWaitForFrame(*window);
     return window;
 }
 
 int runEditor(const QStringList& arguments)
 {
-    QProcess process;
-    process.setProgram(QStringLiteral(REGIO_EDITOR_EXECUTABLE));
-    process.setArguments(arguments);
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
-    process.setProcessEnvironment(env);
-    process.start();
-    if (!process.waitForFinished(180000))
-        return -1;
-    if (process.exitCode() != 0)
-        qWarning("%s", process.readAllStandardError().constData());
-    return process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    const test::EditorRun run = test::runEditor(arguments);
+    if (run.exitCode != 0)
+        qWarning("%s", qPrintable(run.stderrText));
+    return run.exitCode;
 }
 
 double meanDifference(const QImage& a, const QImage& b)

@@ -13,6 +13,7 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 #include "../cli/command_run.h"
 
 #include <QElapsedTimer>
@@ -34,14 +35,7 @@ using namespace regio::editor;
 
 namespace {
 
-std::unique_ptr<MainWindow> makeWindow()
-{
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    return std::make_unique<MainWindow>(options);
-}
+std::unique_ptr<MainWindow> makeWindow() { return test::quietWindow(); }
 
 bool waitForState(PreviewRunner& runner, PreviewState state, int timeoutMs = 120000)
 {
@@ -429,7 +423,8 @@ private slots:
         auto redSum = [&](double exposure) {
             PreviewDisplay d = display;
             d.exposure = exposure;
-            const std::vector<float>& v = buildPreviewLayers(*runner.frame(), d).solution.triangles.vertices();
+            const PreviewLayers layers = buildPreviewLayers(*runner.frame(), d);
+            const std::vector<float>& v = layers.solution.triangles.vertices();
             double sum = 0.0;
             for (size_t i = 3; i < v.size(); i += 7)
                 sum += v[i];

@@ -7,6 +7,7 @@
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "window_test_support.h"
 
 #include <QApplication>
 #include <QImage>
@@ -27,41 +28,15 @@ bool reddish(QRgb c) { return qRed(c) > 90 && qRed(c) > 2 * qGreen(c) && qRed(c)
 bool greenish(QRgb c) { return qGreen(c) > 60 && qGreen(c) > 1.5 * qRed(c) && qGreen(c) > 1.5 * qBlue(c); }
 bool bluish(QRgb c) { return qBlue(c) > 90 && qBlue(c) > 2 * qRed(c) && qBlue(c) > 1.5 * qGreen(c); }
 
-struct RunResult {
-    int exitCode = -1;
-    QString stderrText;
-};
-
-RunResult runEditor(const QStringList& arguments)
-{
-    QProcess process;
-    process.setProgram(QStringLiteral(REGIO_EDITOR_EXECUTABLE));
-    process.setArguments(arguments);
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
-    process.setProcessEnvironment(env);
-    process.start();
-    if (!process.waitForFinished(120000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromLocal8Bit(process.readAllStandardError())};
-}
+test::EditorRun runEditor(const QStringList& arguments) { return test::runEditor(arguments, 120000); }
 
 std::unique_ptr<MainWindow> showWindow(const QString& scene)
 {
-    MainWindowOptions options;
-    options.persistent = false;
-    options.interactive = false;
-    options.autosave = false;
-    auto window = std::make_unique<MainWindow>(options);
+    auto window = test::quietWindow();
     window->resize(1200, 800);
     if (!scene.isEmpty() && !window->openFile(scene))
         qFatal("cannot open %s", qPrintable(scene));
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get()))
-        qFatal("the window was never exposed");
-    if (!QTest::qWaitFor([&] { return window->viewport()->hasRenderedFrame(); }, 20000))
-        qFatal("the viewport never rendered a frame");
+    test::showAndWaitForFrame(*window);
     return window;
 }
 
@@ -86,7 +61,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString png = dir.filePath(QStringLiteral("cornell.png"));
-        const RunResult run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"), png,
+        const test::EditorRun run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"), png,
                                          QStringLiteral("--size"), QStringLiteral("1200x800")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.stderrText));
         QImage image(png);
@@ -118,7 +93,7 @@ private slots:
     void aSceneThatCannotBeOpenedFailsTheScreenshotWithExitCode2()
     {
         QTemporaryDir dir;
-        const RunResult run = runEditor({dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--screenshot"),
+        const test::EditorRun run = runEditor({dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--screenshot"),
                                          dir.filePath(QStringLiteral("out.png"))});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.stderrText.contains(QStringLiteral("missing.json")));
@@ -127,7 +102,7 @@ private slots:
 
     void anUnwritableScreenshotPathFailsWithExitCode2()
     {
-        const RunResult run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"),
+        const test::EditorRun run = runEditor({test::samplePath("cornell-box.json"), QStringLiteral("--screenshot"),
                                          QStringLiteral("/proc/regio-cannot-write-here/out.png")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(!run.stderrText.isEmpty());
