@@ -142,6 +142,18 @@ std::vector<int> AdaptiveMesh::tVertices(int element) const
     return out;
 }
 
+std::vector<int> AdaptiveMesh::boundaryLoop(int element) const
+{
+    const FaceTopology& t = m_faces[size_t(faceOf(element))];
+    const auto& v = m_scene.elements[size_t(element)].vertices;
+    std::vector<int> out;
+    for (int k = 0; k < 3; ++k) {
+        out.push_back(v[size_t(k)]);
+        collectInside(t, v[size_t(k)], v[size_t((k + 1) % 3)], out);
+    }
+    return out;
+}
+
 std::vector<int> AdaptiveMesh::activeElements() const
 {
     std::vector<int> out;
@@ -338,7 +350,9 @@ int AdaptiveMesh::subdivide(std::span<const int> elements, double minEdge)
     while (!pending.empty()) {
         const int parent = pending.back();
         pending.pop_back();
-        for (int child : m_levels[size_t(parent)].children) {
+        // A copy: the splits below grow m_levels and would move the array.
+        const std::array<int, 4> children = m_levels[size_t(parent)].children;
+        for (int child : children) {
             if (!isActive(child))
                 continue; // its own split is pending and covers it
             for (int n : neighbours(child)) {
@@ -366,6 +380,19 @@ int AdaptiveMesh::refine(std::span<const Rgb> radiosity, const model::AdaptiveSe
     return subdivide(selected, settings.minEdge);
 }
 
+double AdaptiveMesh::contrast(int element, std::span<const Rgb> radiosity) const
+{
+    const double le = luminance(radiosity[size_t(element)]);
+    double largest = 0.0;
+    for (int n : neighbours(element)) {
+        const double ln = luminance(radiosity[size_t(n)]);
+        const double larger = std::max(std::abs(le), std::abs(ln));
+        if (larger > 0.0)
+            largest = std::max(largest, std::abs(le - ln) / larger);
+    }
+    return largest;
+}
+
 std::vector<int> AdaptiveMesh::selectBySubdivisionCriterion(std::span<const Rgb> radiosity, double threshold,
                                                             double minEdge) const
 {
@@ -374,20 +401,9 @@ std::vector<int> AdaptiveMesh::selectBySubdivisionCriterion(std::span<const Rgb>
     if (!std::isfinite(minEdge) || minEdge <= 0.0)
         throw std::invalid_argument("adaptive subdivision: minEdge must be a positive length");
     std::vector<int> out;
-    for (int e : activeElements()) {
-        const double le = luminance(radiosity[size_t(e)]);
-        bool differs = false;
-        for (int n : neighbours(e)) {
-            const double ln = luminance(radiosity[size_t(n)]);
-            const double larger = std::max(std::abs(le), std::abs(ln));
-            if (larger > 0.0 && std::abs(le - ln) > threshold * larger) {
-                differs = true;
-                break;
-            }
-        }
-        if (differs && canSplit(e, minEdge))
+    for (int e : activeElements())
+        if (contrast(e, radiosity) > threshold && canSplit(e, minEdge))
             out.push_back(e);
-    }
     return out;
 }
 
@@ -454,7 +470,13 @@ ActiveScene AdaptiveMesh::activeScene() const
         }
     }
     s.stats.elements = int(s.elements.size());
-    buildPieces(s);
+    // Elements with T-vertices are painted through them (pieces.h), so the
+    // hemicube sees no crack between a coarse element and its finer neighbours.
+    std::vector<std::vector<int>> loops(s.elements.size());
+    for (size_t i = 0; i < s.elements.size(); ++i)
+        if (std::vector<int> loop = boundaryLoop(result.sourceElement[i]); loop.size() > 3)
+            loops[i] = std::move(loop);
+    buildPieces(s, loops);
     return result;
 }
 

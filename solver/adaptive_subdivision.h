@@ -99,6 +99,8 @@ public:
     // Vertices lying inside the element's edges (its T-vertices), in order
     // around the element.
     std::vector<int> tVertices(int element) const;
+    // The element's corners with its T-vertices in order between them.
+    std::vector<int> boundaryLoop(int element) const;
 
     // Whether split(element, minEdge) would split it: it is active, its
     // children's edges are at least minEdge long and (anchoring) the grading
@@ -112,6 +114,10 @@ public:
     // with midpoints on all three edges. Returns the number of splits.
     int subdivide(std::span<const int> elements, double minEdge);
 
+    // The largest relative luminance difference between the element and an
+    // edge neighbour, |L_e - L_n| / max(|L_e|, |L_n|) (0 without neighbours).
+    // `radiosity` is per hierarchy element.
+    double contrast(int element, std::span<const Rgb> radiosity) const;
     // §5.7 criterion: the active elements whose luminance differs from an
     // edge neighbour's by more than `threshold` relative to the larger of the
     // two, and that may still be split. `radiosity` is per hierarchy element.

@@ -52,8 +52,9 @@ bool keepSide(std::vector<Vec3>& loop)
 
 class PieceBuilder {
 public:
-    explicit PieceBuilder(PreparedScene& scene)
+    PieceBuilder(PreparedScene& scene, std::span<const std::vector<int>> elementLoops)
         : m_scene(scene)
+        , m_elementLoops(elementLoops)
         , m_perNode(scene.nodes.size())
         , m_faceCuts(scene.faces.size())
     {
@@ -67,6 +68,10 @@ public:
         std::vector<Work> pieces;
         pieces.reserve(input.elements.size());
         for (int e : input.elements) {
+            if (size_t(e) < m_elementLoops.size() && m_elementLoops[size_t(e)].size() > 3) {
+                pieces.push_back({m_elementLoops[size_t(e)], e, true});
+                continue;
+            }
             const Element& element = m_scene.elements[size_t(e)];
             pieces.push_back({{element.vertices[0], element.vertices[1], element.vertices[2]}, e});
         }
@@ -145,7 +150,8 @@ private:
             (anyFront || (!anyBack && sum >= 0.0) ? front : back).push_back(piece);
             return;
         }
-        Work f{{}, piece.element}, b{{}, piece.element};
+        // Centred stays: a side may keep T-vertices of the element loop.
+        Work f{{}, piece.element, piece.centred}, b{{}, piece.element, piece.centred};
         for (size_t i = 0; i < n; ++i) {
             const size_t j = (i + 1) % n;
             const double sa = m_distance[i], sb = m_distance[j];
@@ -271,6 +277,7 @@ private:
     static constexpr double kMergeDistance = 1e-9;          // metres; far below any mesh size
 
     PreparedScene& m_scene;
+    std::span<const std::vector<int>> m_elementLoops;
     std::vector<std::vector<Work>> m_perNode;
     std::unordered_map<CutKey, int, CutKeyHash> m_cuts;
     std::vector<std::vector<int>> m_faceCuts; // per input face: its cut points
@@ -398,7 +405,7 @@ void PieceBuilder::finish()
 
 } // namespace
 
-void buildPieces(PreparedScene& scene)
+void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> elementLoops)
 {
     scene.pieceVertices = scene.vertices;
     scene.pieces.clear();
@@ -406,7 +413,7 @@ void buildPieces(PreparedScene& scene)
     scene.stats.lostPieceArea = 0.0;
     for (Element& e : scene.elements)
         e.node = -1;
-    PieceBuilder builder(scene);
+    PieceBuilder builder(scene, elementLoops);
     for (size_t f = 0; f < scene.faces.size(); ++f)
         builder.pushFace(int(f));
     builder.finish();

@@ -23,12 +23,22 @@
 // counted in PrepareStats::lostPieces / lostPieceArea, never dropped silently.
 #include "solver/prepared_scene.h"
 
+#include <span>
+#include <vector>
+
 namespace regio::solver {
 
 // (Re)builds scene.pieceVertices, scene.pieces, the piece ranges of the
 // nodes, Element::node, Patch::node and the piece statistics, from the
 // elements, the input face polygons and the trees. Called by prepareScene and
 // again after adaptive subdivision changed the elements.
-void buildPieces(PreparedScene& scene);
+//
+// `elementLoops`, when given, holds per element either nothing (paint its
+// triangle) or its boundary loop: its corners and, in order between them, the
+// vertices of finer neighbours lying on its edges (the T-vertices adaptive
+// subdivision leaves, §5.7). Such an element is painted around its centroid
+// through those vertices, so the rasteriser meets its neighbours vertex to
+// vertex and no pixel falls through the crack a T-junction would open.
+void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> elementLoops = {});
 
 } // namespace regio::solver

@@ -24,14 +24,21 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     report["stop"] = stopReasonName(stats.stop);
     report["unshotRatio"] = stats.unshotRatio;
     report["patches"] = stats.patches;
-    report["elements"] = stats.elements;
+    report["elements"] = stats.elements; // final count, after adaptive subdivision (§5.7)
+    report["adaptive"] = {{"enabled", settings.adaptive.enabled},
+                          {"threshold", settings.adaptive.threshold},
+                          {"minEdge", settings.adaptive.minEdge},
+                          {"anchoring", settings.adaptive.anchoring},
+                          {"rounds", stats.adaptiveRounds}};
     // Element pieces painted per BSP node (solver/pieces.h) and any that found
     // no node (should be none).
     report["pieces"] = prepared.stats.pieces;
     report["lostPieces"] = prepared.stats.lostPieces;
     report["seconds"] = {{"preprocess", stats.preprocessSeconds},
                          {"shoot", stats.shootSeconds},
-                         {"total", totalSeconds.value_or(stats.preprocessSeconds + stats.shootSeconds)}};
+                         {"adaptive", stats.adaptiveSeconds},
+                         {"total", totalSeconds.value_or(stats.preprocessSeconds + stats.shootSeconds
+                                                         + stats.adaptiveSeconds)}};
     report["energy"] = {{"emitted", rgbJson(stats.energy.emitted)},
                         {"absorbed", rgbJson(stats.energy.absorbed)},
                         {"unshot", rgbJson(stats.energy.unshot)},

@@ -1,6 +1,7 @@
 #include "solver/solver.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace regio::solver {
 
@@ -13,7 +14,7 @@ double secondsSince(Clock::time_point start)
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::shared_ptr<const SolutionMesh> makeMesh(const PreparedScene& prepared, int revision)
+std::shared_ptr<SolutionMesh> makeMesh(const PreparedScene& prepared, int revision)
 {
     auto mesh = std::make_shared<SolutionMesh>();
     mesh->revision = revision;
@@ -63,6 +64,19 @@ Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptio
                                                    ? VisibilityMode::ZBuffer
                                                    : VisibilityMode::Painter);
     s.regions = options.regions.value_or(scene.solver.regions);
+    s.adaptive = scene.solver.adaptive;
+    s.adaptive.enabled = options.adaptive.value_or(s.adaptive.enabled);
+    s.adaptive.threshold = options.adaptiveThreshold.value_or(s.adaptive.threshold);
+    s.adaptive.minEdge = options.adaptiveMinEdge.value_or(s.adaptive.minEdge);
+    s.adaptive.anchoring = options.adaptiveAnchoring.value_or(s.adaptive.anchoring);
+    if (s.adaptive.enabled && !(std::isfinite(s.adaptive.minEdge) && s.adaptive.minEdge > 0.0)) {
+        result.diagnostics.push_back(model::makeError("the adaptive minEdge must be a positive length", "/solver/adaptive/minEdge"));
+        return result;
+    }
+    if (s.adaptive.enabled && !(std::isfinite(s.adaptive.threshold) && s.adaptive.threshold >= 0.0)) {
+        result.diagnostics.push_back(model::makeError("the adaptive threshold must be a non-negative number", "/solver/adaptive/threshold"));
+        return result;
+    }
     if (s.hemicube < 2) {
         result.diagnostics.push_back(model::makeError("the hemicube resolution must be at least 2", "/solver/hemicube"));
         return result;
@@ -81,6 +95,8 @@ Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptio
     std::unique_ptr<Solver> solver(new Solver());
     solver->m_settings = s;
     solver->m_prepared = std::move(*prepared.scene);
+    if (s.adaptive.enabled)
+        solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
     solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility);
     solver->m_mesh = makeMesh(solver->m_prepared, 0);
     solver->m_stats.preprocessSeconds = secondsSince(start);
@@ -104,10 +120,61 @@ void Solver::updateStatsLocked()
     m_stats.unshotRatio = m_shooting->unshotRatio();
 }
 
+void Solver::noteShot()
+{
+    if (!m_refinement)
+        return;
+    bool emits = false;
+    if (const int shooter = m_shooting->lastShooter(); shooter >= 0) {
+        const Patch& p = m_prepared.patches[static_cast<size_t>(shooter)];
+        const Rgb& emission = m_prepared.properties[static_cast<size_t>(p.properties)].emission;
+        emits = emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0;
+    }
+    m_refinement->noteShot(m_shooting->iterations(), emits);
+}
+
+bool Solver::refineIfDue(const std::atomic<bool>* cancel)
+{
+    if (!m_refinement || !m_refinement->roundDue())
+        return true;
+    const auto start = Clock::now();
+    // Only this thread writes the shooter's arrays: reading them unlocked is safe.
+    const AdaptiveRefinement::Outcome outcome =
+        m_refinement->runRound(m_shooting->radiosity(), m_shooting->unshotRadiosity(), cancel);
+    if (outcome != AdaptiveRefinement::Outcome::Refined) {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_stats.adaptiveSeconds += secondsSince(start);
+        return outcome != AdaptiveRefinement::Outcome::Cancelled;
+    }
+    // The new active scene and its mesh are built without the lock; readers
+    // keep seeing the previous mesh with its radiosity until the swap.
+    ActiveScene active = m_refinement->takeActiveScene();
+    std::shared_ptr<SolutionMesh> mesh = makeMesh(active.scene, m_mesh->revision + 1);
+    if (m_settings.adaptive.anchoring) {
+        std::vector<int> activeIndex(m_refinement->mesh().hierarchy().size(), -1);
+        for (size_t i = 0; i < active.sourceElement.size(); ++i)
+            activeIndex[size_t(active.sourceElement[i])] = int(i);
+        for (const OutputTriangle& t : m_refinement->mesh().outputTriangles()) {
+            mesh->anchoredTriangles.push_back(t.vertices);
+            mesh->anchoredElement.push_back(activeIndex[size_t(t.element)]);
+        }
+    }
+    std::lock_guard<std::mutex> lock(m_mutex);
+    // Assigned in place: the shooter and its visibility refer to m_prepared.
+    m_prepared = std::move(active.scene);
+    m_shooting->replaceElementState(std::move(active.radiosity), std::move(active.unshot));
+    m_mesh = std::move(mesh);
+    m_stats.adaptiveRounds = m_refinement->rounds();
+    m_stats.adaptiveSeconds += secondsSince(start);
+    updateStatsLocked();
+    return true;
+}
+
 int Solver::step(int n)
 {
     int done = 0;
     for (; done < n; ++done) {
+        refineIfDue(nullptr);
         const auto start = Clock::now();
         const ShotResult r = m_shooting->shoot(nullptr, &m_mutex);
         std::lock_guard<std::mutex> lock(m_mutex);
@@ -117,6 +184,7 @@ int Solver::step(int n)
             break;
         }
         updateStatsLocked();
+        noteShot();
     }
     return done;
 }
@@ -142,16 +210,22 @@ StopReason Solver::run(const Progress& progress, const std::atomic<bool>& cancel
         }
         if (reason != StopReason::None)
             break;
+        if (!refineIfDue(&cancel)) {
+            reason = StopReason::Cancelled;
+            break;
+        }
         const auto start = Clock::now();
         const ShotResult r = m_shooting->shoot(&cancel, &m_mutex);
         SolverStats copy;
         {
             std::lock_guard<std::mutex> lock(m_mutex);
             m_stats.shootSeconds += secondsSince(start);
-            if (r == ShotResult::Shot)
+            if (r == ShotResult::Shot) {
                 updateStatsLocked();
-            else
+                noteShot();
+            } else {
                 reason = r == ShotResult::Cancelled ? StopReason::Cancelled : StopReason::NothingToShoot;
+            }
             copy = m_stats;
         }
         if (r == ShotResult::Shot && progress)
@@ -181,8 +255,8 @@ SolutionSnapshot Solver::snapshot() const
 std::vector<FaceResult> Solver::faceResults() const
 {
     std::vector<FaceResult> out;
-    out.reserve(m_prepared.faces.size());
     std::lock_guard<std::mutex> lock(m_mutex);
+    out.reserve(m_prepared.faces.size());
     const std::vector<Rgb>& b = m_shooting->radiosity();
     for (const InputFace& f : m_prepared.faces) {
         FaceResult r;

@@ -12,6 +12,7 @@
 // snapshot(), stats() and faceResults() may be called from any thread.
 #include "model/diagnostic.h"
 #include "model/scene.h"
+#include "solver/adaptive_refinement.h"
 #include "solver/prepare.h"
 #include "solver/prepared_scene.h"
 #include "solver/shooting.h"
@@ -37,6 +38,11 @@ struct SolverOptions {
     std::optional<int> elementsPerPatch;
     std::optional<VisibilityMode> visibility;
     std::optional<RegionsMode> regions;
+    // Adaptive subdivision (§5.7); empty = scene.solver.adaptive.
+    std::optional<bool> adaptive;
+    std::optional<double> adaptiveThreshold;
+    std::optional<double> adaptiveMinEdge;
+    std::optional<bool> adaptiveAnchoring;
     int autoRegionPatchThreshold = 256;
 };
 
@@ -49,6 +55,7 @@ struct EffectiveSettings {
     int elementsPerPatch = 4;
     VisibilityMode visibility = VisibilityMode::Painter;
     RegionsMode regions = RegionsMode::Authored;
+    model::AdaptiveSettings adaptive; // when the mesh is refined: solver/adaptive_refinement.h
 };
 
 enum class StopReason { None, Converged, MaxIterations, NothingToShoot, Cancelled };
@@ -57,13 +64,15 @@ const char* stopReasonName(StopReason reason);
 struct SolverStats {
     int iterations = 0;
     int patches = 0;
-    int elements = 0;
+    int elements = 0;        // active elements the shooter works on
+    int adaptiveRounds = 0;  // §5.7 refinement rounds that split elements
     EnergyBalance energy;
     Rgb ambient{0.0};
     double unshotRatio = 0.0; // largest unshot / emitted over the emitting channels
     StopReason stop = StopReason::None;
     double preprocessSeconds = 0.0;
     double shootSeconds = 0.0;
+    double adaptiveSeconds = 0.0; // spent refining the mesh (not part of shootSeconds)
 };
 
 // The element mesh, shared between snapshots until the mesh changes.
@@ -75,6 +84,14 @@ struct SolutionMesh {
     std::vector<int> elementFace;              // per element: index into faceIds
     std::vector<Rgb> reflectance;              // per element
     std::vector<std::string> faceIds;          // the input faces of the file, scene order
+    // After adaptive subdivision (§5.7) with anchoring: the conforming
+    // triangulation of the elements (a coarse element next to finer ones is
+    // fanned through their vertices on its edges, the "special edges" of the
+    // paper's Figure 5), each triangle with the element whose value it shows.
+    // Empty before the first refinement and with anchoring off: then the
+    // triangles above are what there is.
+    std::vector<std::array<int, 3>> anchoredTriangles;
+    std::vector<int> anchoredElement;
 };
 
 struct SolutionSnapshot {
@@ -109,17 +126,21 @@ public:
     ~Solver();
 
     const EffectiveSettings& settings() const { return m_settings; }
+    // The scene the shooter works on (the active elements once subdivided).
+    // Not synchronised with a running solve.
     const PreparedScene& prepared() const { return m_prepared; }
 
     // Shoots up to n times (fewer only when no unshot power is left), ignoring
-    // maxIterations and convergence. Returns the number of shots done.
+    // maxIterations and convergence, with the refinement rounds that fall
+    // between the shots. Returns the number of shots done.
     int step(int n = 1);
 
     using Progress = std::function<void(const SolverStats&)>;
     // Shoots until the unshot/emitted ratio falls below `convergence`, the
     // iteration count reaches maxIterations or `cancel` becomes true (then
     // the shot under way is abandoned: within one partial hemicube render,
-    // far below 100 ms). `progress` is called after every shot.
+    // far below 100 ms; a refinement round stops at its next slice and is
+    // finished before the next shot). `progress` is called after every shot.
     StopReason run(const Progress& progress, const std::atomic<bool>& cancel);
 
     bool converged() const;
@@ -133,13 +154,21 @@ public:
 private:
     Solver() = default;
     void updateStatsLocked();
+    // Before a shot: the §5.7 refinement round that is due, if any, and the
+    // hand-over of the grown mesh. false = cancelled (resumed next time).
+    bool refineIfDue(const std::atomic<bool>* cancel);
+    void noteShot();
+
+    std::unique_ptr<AdaptiveRefinement> m_refinement; // empty when adaptive subdivision is off
 
     EffectiveSettings m_settings;
     PreparedScene m_prepared;
     std::unique_ptr<Shooting> m_shooting;
     std::shared_ptr<const SolutionMesh> m_mesh;
 
-    mutable std::mutex m_mutex; // guards m_stats and the shooting results while they are written
+    // Guards m_stats, m_mesh, m_prepared while it is replaced and the shooting
+    // results while they are written.
+    mutable std::mutex m_mutex;
     SolverStats m_stats;
 };
 

@@ -40,6 +40,9 @@ Solution solve(const model::Scene& scene, RegionsMode regions)
     options.autoRegionPatchThreshold = 100;
     options.maxIterations = 100000;
     options.convergence = 1e-3;
+    // The same mesh in every mode: equal patch and element counts are part of
+    // the equivalence (adaptive subdivision would follow each mode's noise).
+    options.adaptive = false;
     auto built = Solver::create(scene, options);
     EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
     if (!built.solver)

@@ -38,6 +38,8 @@ std::unique_ptr<Solver> make(const model::Scene& scene, SolverOptions options = 
         options.hemicube = 64;
     if (!options.patchSize)
         options.patchSize = 2.0; // each lamp stays two triangle patches
+    if (!options.adaptive)
+        options.adaptive = false; // shooting on a fixed mesh (adaptive_solver_test.cpp has the rest)
     auto built = Solver::create(scene, options);
     EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
     return std::move(built.solver);

@@ -142,6 +142,7 @@ TEST(Visibility, PainterAndZBufferSolutionsAgreePerFaceWithinHalfAPercent)
         options.visibility = m == 0 ? VisibilityMode::Painter : VisibilityMode::ZBuffer;
         options.maxIterations = 100000;
         options.convergence = 2e-3;
+        options.adaptive = false; // both on the same mesh
         auto built = Solver::create(scene, options);
         ASSERT_TRUE(built.solver);
         std::atomic<bool> cancel{false};
