@@ -4,8 +4,9 @@
 // answers agree with a uniformly fine mesh.
 #include "solver/report.h"
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "adaptive_scenes.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,27 +16,6 @@
 
 namespace regio::solver {
 namespace {
-
-// A 3 x 3 m floor, a 0.6 m box standing on it and a small lamp above, off to
-// one side so the box casts a shadow across the floor. Open: what leaves the
-// scene escapes.
-model::Scene boxUnderLamp()
-{
-    model::Scene scene;
-    test::addMaterial(scene, "grey", Rgb{0.5});
-    test::addMaterial(scene, "lamp", Rgb{0.0}, Rgb{40.0});
-    // Floor facing +y, lamp facing -y (corner order decides the side).
-    test::addPolygon(scene, "floor", {{-1.5, 0.0, -1.5}, {-1.5, 0.0, 1.5}, {1.5, 0.0, 1.5}, {1.5, 0.0, -1.5}}, "grey");
-    test::addBox(scene, "box", Vec3{-0.3, 0.0, -0.3}, Vec3{0.3, 0.6, 0.3}, "grey", false);
-    test::addPolygon(scene, "lamp", {{-1.0, 1.5, -0.2}, {-0.6, 1.5, -0.2}, {-0.6, 1.5, 0.2}, {-1.0, 1.5, 0.2}}, "lamp");
-    scene.solver.patchSize = 0.5;
-    scene.solver.elementsPerPatch = 4;
-    scene.solver.hemicube = 100;
-    scene.solver.adaptive.enabled = true;
-    scene.solver.adaptive.threshold = 0.3; // above the falloff between neighbours, below a shadow edge
-    scene.solver.adaptive.minEdge = 0.04;
-    return scene;
-}
 
 Vec3 elementCentroid(const SolutionMesh& mesh, size_t e)
 {
@@ -56,7 +36,7 @@ int faceIndex(const SolutionMesh& mesh, const std::string& id)
 
 TEST(AdaptiveSolver, TheEnergyBalanceHoldsExactlyAfterASolveThatSubdivides)
 {
-    auto built = Solver::create(boxUnderLamp());
+    auto built = Solver::create(test::boxUnderLamp());
     ASSERT_TRUE(built.solver);
     const int initial = built.solver->stats().elements;
     EXPECT_EQ(built.solver->step(40), 40) << "rounds between shots do not count as shots";
@@ -71,7 +51,7 @@ TEST(AdaptiveSolver, TheEnergyBalanceHoldsExactlyAfterASolveThatSubdivides)
 
 TEST(AdaptiveSolver, ElementsMultiplyWhereTheShadowFallsAndTheMeshRevisionChanges)
 {
-    model::Scene scene = boxUnderLamp();
+    model::Scene scene = test::boxUnderLamp();
     scene.solver.adaptive.threshold = 0.5; // only the shadow's edge, not the lamp's falloff
     auto built = Solver::create(scene);
     ASSERT_TRUE(built.solver);
@@ -110,7 +90,7 @@ TEST(AdaptiveSolver, ElementsMultiplyWhereTheShadowFallsAndTheMeshRevisionChange
 
 TEST(AdaptiveSolver, SnapshotsFromAnotherThreadStayConsistentWhileRunSubdivides)
 {
-    model::Scene scene = boxUnderLamp();
+    model::Scene scene = test::boxUnderLamp();
     scene.solver.maxIterations = 60;
     scene.solver.convergence = 1e-6;
     auto built = Solver::create(scene);
@@ -146,7 +126,7 @@ TEST(AdaptiveSolver, SnapshotsFromAnotherThreadStayConsistentWhileRunSubdivides)
 
 TEST(AdaptiveSolver, PerFaceMeansAgreeWithAUniformlyFineMeshWithinTwoPercent)
 {
-    model::Scene scene = boxUnderLamp();
+    model::Scene scene = test::boxUnderLamp();
     scene.solver.convergence = 1e-4;
     scene.solver.maxIterations = 2000;
     const std::atomic<bool> cancel{false};
@@ -184,7 +164,7 @@ TEST(AdaptiveSolver, PerFaceMeansAgreeWithAUniformlyFineMeshWithinTwoPercent)
 
 TEST(AdaptiveSolver, TheReportGivesTheFinalElementCountAndTheRounds)
 {
-    auto built = Solver::create(boxUnderLamp());
+    auto built = Solver::create(test::boxUnderLamp());
     ASSERT_TRUE(built.solver);
     const int initial = built.solver->stats().elements;
     built.solver->step(20);
@@ -203,7 +183,7 @@ TEST(AdaptiveSolver, OptionsOverrideTheScenesAdaptiveSettings)
     options.adaptiveThreshold = 0.2;
     options.adaptiveMinEdge = 0.1;
     options.adaptiveAnchoring = false;
-    auto built = Solver::create(boxUnderLamp(), options);
+    auto built = Solver::create(test::boxUnderLamp(), options);
     ASSERT_TRUE(built.solver);
     const model::AdaptiveSettings& a = built.solver->settings().adaptive;
     EXPECT_FALSE(a.enabled);
@@ -214,6 +194,114 @@ TEST(AdaptiveSolver, OptionsOverrideTheScenesAdaptiveSettings)
     built.solver->step(5);
     EXPECT_EQ(built.solver->stats().elements, initial);
     EXPECT_EQ(built.solver->snapshot().mesh->revision, 0);
+}
+
+TEST(AdaptiveSolver, AClosedRoomStaysBalancedAndAlmostLeakFreeWhileItsMeshGrows)
+{
+    auto built = Solver::create(test::closedRoom());
+    ASSERT_TRUE(built.solver);
+    const int initial = built.solver->stats().elements;
+    built.solver->step(200);
+    const SolverStats s = built.solver->stats();
+    EXPECT_GT(s.elements, initial);
+    EXPECT_GT(s.adaptiveRounds, 1);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(s.energy.absorbed[c] + s.energy.unshot[c] + s.energy.escaped[c], s.energy.emitted[c],
+                    1e-9 * s.energy.emitted[c]);
+        // Within an input face, elements are painted through their
+        // T-vertices (pieces.h), so no pixel falls between a coarse element
+        // and its finer neighbours (painted as bare triangles, with the mesh
+        // grown 8x, they leaked 2-3e-4 of the emitted power). Where the finer elements of one
+        // face meet a coarser element of another (the room's corners) the
+        // rasteriser can still miss a pixel now and then: measured 6-9e-6,
+        // the fixed mesh's bound is 1e-5 (energy_test.cpp).
+        EXPECT_LT(s.energy.escaped[c], 2e-5 * s.energy.emitted[c]);
+    }
+}
+
+TEST(AdaptiveSolver, StepAndRunRefineAlikeSoTheSameShotCountGivesTheSameMesh)
+{
+    model::Scene scene = test::boxUnderLamp();
+    auto stepped = Solver::create(scene);
+    ASSERT_TRUE(stepped.solver);
+    stepped.solver->step(40);
+
+    SolverOptions options;
+    options.maxIterations = 40;
+    options.convergence = 0.0;
+    auto ran = Solver::create(scene, options);
+    ASSERT_TRUE(ran.solver);
+    const std::atomic<bool> cancel{false};
+    ASSERT_EQ(ran.solver->run({}, cancel), StopReason::MaxIterations);
+
+    const SolutionSnapshot a = stepped.solver->snapshot();
+    const SolutionSnapshot b = ran.solver->snapshot();
+    EXPECT_EQ(a.stats.adaptiveRounds, b.stats.adaptiveRounds);
+    EXPECT_EQ(a.mesh->revision, b.mesh->revision);
+    ASSERT_EQ(a.mesh->triangles, b.mesh->triangles);
+    EXPECT_EQ(a.radiosity, b.radiosity);
+}
+
+TEST(AdaptiveSolver, TheLastShotIsNeverFollowedByARoundSoNoElementEndsWithOnlyInterpolatedValues)
+{
+    auto built = Solver::create(test::boxUnderLamp());
+    ASSERT_TRUE(built.solver);
+    built.solver->step(1); // the lamp: a round is now due, but only before the next shot
+    EXPECT_EQ(built.solver->stats().adaptiveRounds, 0);
+    EXPECT_EQ(built.solver->snapshot().mesh->revision, 0);
+    built.solver->step(1);
+    EXPECT_EQ(built.solver->stats().adaptiveRounds, 1);
+}
+
+TEST(AdaptiveSolver, TheAnchoredTriangulationHasNoTVertices)
+{
+    for (bool anchoring : {true, false}) {
+        model::Scene scene = test::boxUnderLamp();
+        scene.solver.adaptive.anchoring = anchoring;
+        auto built = Solver::create(scene);
+        ASSERT_TRUE(built.solver);
+        built.solver->step(20);
+        const SolutionSnapshot snap = built.solver->snapshot();
+        const SolutionMesh& m = *snap.mesh;
+        ASSERT_GT(snap.stats.adaptiveRounds, 0);
+        if (!anchoring) {
+            EXPECT_TRUE(m.anchoredTriangles.empty());
+            continue;
+        }
+        ASSERT_EQ(m.anchoredTriangles.size(), m.anchoredElement.size());
+        EXPECT_GT(m.anchoredTriangles.size(), m.triangles.size()) << "some element was fanned";
+        // Per face: no vertex of the face's triangles lies inside an edge of
+        // another of its triangles.
+        const int floor = faceIndex(m, "floor.face");
+        ASSERT_GE(floor, 0);
+        std::vector<std::array<int, 3>> tris;
+        std::vector<int> used;
+        for (size_t t = 0; t < m.anchoredTriangles.size(); ++t) {
+            const int e = m.anchoredElement[t];
+            ASSERT_GE(e, 0);
+            if (m.elementFace[size_t(e)] != floor)
+                continue;
+            tris.push_back(m.anchoredTriangles[t]);
+            for (int v : m.anchoredTriangles[t])
+                used.push_back(v);
+        }
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        int tVertices = 0;
+        for (const auto& t : tris)
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 a = m.vertices[size_t(t[size_t(k)])], b = m.vertices[size_t(t[size_t((k + 1) % 3)])];
+                const Vec3 d = b - a;
+                const double len2 = glm::dot(d, d);
+                for (int v : used) {
+                    const Vec3 r = m.vertices[size_t(v)] - a;
+                    const double u = glm::dot(r, d) / len2;
+                    if (u > 1e-9 && u < 1.0 - 1e-9 && glm::length(r - d * u) < 1e-9)
+                        ++tVertices;
+                }
+            }
+        EXPECT_EQ(tVertices, 0);
+    }
 }
 
 } // namespace
