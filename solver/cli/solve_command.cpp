@@ -44,6 +44,16 @@ const char* const kSolveUsage =
     "  --regions MODE          authored (default), none (one BSP tree) or auto\n"
     "  --report FILE.json      write the JSON report there ('-': standard output)\n"
     "\n"
+    "Adaptive subdivision of the element mesh (paper section 5.7):\n"
+    "  --adaptive on|off       refine the mesh between shots where neighbouring\n"
+    "                          elements differ (off: the initial mesh throughout)\n"
+    "  --threshold X           relative luminance difference between edge\n"
+    "                          neighbours that splits an element, X >= 0\n"
+    "                          (0: any difference; 1 or more: never)\n"
+    "  --min-edge METRES       shortest element edge a split may make, > 0\n"
+    "  --anchoring on|off      keep the mesh conforming and graded 2:1\n"
+    "                          (Baum et al. 1991); off only to see what it does\n"
+    "\n"
     "Output of the lit model (one scene only):\n"
     "  --out FILE              the lit model: .gltf (+ .bin), .glb, .ply or .obj\n"
     "  --image FILE.png        a Gouraud-shaded picture from the scene's camera\n"
@@ -93,6 +103,15 @@ bool parseNumber(const std::string& text, T& value)
     return in && in.peek() == std::char_traits<char>::eof();
 }
 
+std::optional<bool> parseSwitch(const std::string& text)
+{
+    if (text == "on")
+        return true;
+    if (text == "off")
+        return false;
+    return std::nullopt;
+}
+
 // Parses the command line; returns an exit code when the command must stop here.
 std::optional<int> parseOptions(int argc, char** argv, Options& options)
 {
@@ -132,7 +151,8 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
         } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" ||
                    arg == "--visibility" || arg == "--regions" || arg == "--report" ||
                    arg == "--out" || arg == "--image" || arg == "--size" || arg == "--exposure" ||
-                   arg == "--gamma" || arg == "--false-colour") {
+                   arg == "--gamma" || arg == "--false-colour" || arg == "--adaptive" ||
+                   arg == "--threshold" || arg == "--min-edge" || arg == "--anchoring") {
             if (i + 1 >= argc)
                 return usageError(arg + " needs a value");
             value = argv[++i];
@@ -174,6 +194,21 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
                 options.solver.regions = solver::RegionsMode::Auto;
             else
                 return usageError("--regions expects authored, none or auto, not '" + value + "'");
+        } else if (arg == "--adaptive" || arg == "--anchoring") {
+            const std::optional<bool> on = parseSwitch(value);
+            if (!on)
+                return usageError(arg + " expects on or off, not '" + value + "'");
+            (arg == "--adaptive" ? options.solver.adaptive : options.solver.adaptiveAnchoring) = *on;
+        } else if (arg == "--threshold") {
+            double x = 0.0;
+            if (!parseNumber(value, x) || !std::isfinite(x) || x < 0.0)
+                return usageError("--threshold expects a relative difference >= 0, not '" + value + "'");
+            options.solver.adaptiveThreshold = x;
+        } else if (arg == "--min-edge") {
+            double metres = 0.0;
+            if (!parseNumber(value, metres) || !std::isfinite(metres) || metres <= 0.0)
+                return usageError("--min-edge expects a length in metres > 0, not '" + value + "'");
+            options.solver.adaptiveMinEdge = metres;
         } else if (arg == "--report") {
             if (value.empty())
                 return usageError("--report needs a file name");
@@ -398,10 +433,14 @@ int runSolve(int argc, char** argv)
 
         if (!options.quiet) {
             const solver::SolverStats st = s.stats();
-            char line[256];
+            char rounds[64] = "";
+            if (s.settings().adaptive.enabled)
+                std::snprintf(rounds, sizeof rounds, " (%d adaptive round%s)", st.adaptiveRounds,
+                              st.adaptiveRounds == 1 ? "" : "s");
+            char line[320];
             std::snprintf(line, sizeof line,
-                          ": %d iterations (%s), %d patches, %d elements, unshot %.3g %% of emitted, %.2f s",
-                          st.iterations, solver::stopReasonName(stop), st.patches, st.elements,
+                          ": %d iterations (%s), %d patches, %d elements%s, unshot %.3g %% of emitted, %.2f s",
+                          st.iterations, solver::stopReasonName(stop), st.patches, st.elements, rounds,
                           100.0 * st.unshotRatio, total);
             summary << displayName(file) << line << "\n";
         }

@@ -88,8 +88,14 @@ TEST(SolveCommand, SolvesASampleSceneAndWritesAReportWithEveryRequiredField)
     EXPECT_EQ(r["iterations"], 5);
     EXPECT_GT(r["patches"].get<int>(), 0);
     EXPECT_GE(r["elements"].get<int>(), r["patches"].get<int>());
-    for (const char* key : {"preprocess", "shoot", "total"})
+    for (const char* key : {"preprocess", "shoot", "adaptive", "total"})
         EXPECT_GE(r["seconds"][key].get<double>(), 0.0) << key;
+    // The sample's own adaptive settings (§5.7), and how many rounds split elements.
+    EXPECT_EQ(r["adaptive"]["enabled"], true);
+    EXPECT_TRUE(r["adaptive"]["threshold"].is_number());
+    EXPECT_TRUE(r["adaptive"]["minEdge"].is_number());
+    EXPECT_TRUE(r["adaptive"]["anchoring"].is_boolean());
+    EXPECT_GE(r["adaptive"]["rounds"].get<int>(), 0);
     for (const char* key : {"emitted", "absorbed", "unshot", "escaped"})
         expectRgb(r["energy"][key]);
     EXPECT_EQ(r["bsp"]["regions"], 3);
@@ -267,8 +273,8 @@ TEST(SolveCommand, HelpDescribesEveryOption)
 {
     const CommandRun run = solve({"--help"});
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions", "--report",
-                               "--quiet"})
+    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions",
+                               "--adaptive", "--threshold", "--min-edge", "--anchoring", "--report", "--quiet"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
