@@ -373,6 +373,29 @@ bool writeSolutionOutputs(const Options& options, const model::Scene& scene, con
     return true;
 }
 
+// --threshold, --min-edge and --anchoring tune a subdivision that a scene
+// with adaptive.enabled = false (or --adaptive off) never does: say so
+// rather than let the user believe they had an effect.
+void warnAboutIdleAdaptiveOptions(const std::string& name, const Options& options,
+                                  const solver::EffectiveSettings& settings)
+{
+    if (settings.adaptive.enabled)
+        return;
+    std::string given;
+    int count = 0;
+    for (const auto& [set, option] : {std::pair{options.solver.adaptiveThreshold.has_value(), "--threshold"},
+                                      std::pair{options.solver.adaptiveMinEdge.has_value(), "--min-edge"},
+                                      std::pair{options.solver.adaptiveAnchoring.has_value(), "--anchoring"}})
+        if (set) {
+            given += (given.empty() ? "" : ", ") + std::string(option);
+            ++count;
+        }
+    if (count > 0)
+        std::cerr << name << ": warning: " << given << (count == 1 ? " has" : " have")
+                  << " no effect: adaptive subdivision is off"
+                  << (options.solver.adaptive ? "" : " in the scene (--adaptive on turns it on)") << "\n";
+}
+
 } // namespace
 
 int runSolve(int argc, char** argv)
@@ -416,6 +439,7 @@ int runSolve(int argc, char** argv)
         }
 
         solver::Solver& s = *built.solver;
+        warnAboutIdleAdaptiveOptions(displayName(file), options, s.settings());
         solver::StopReason stop;
         {
             ProgressLine progress(displayName(file), s.settings().maxIterations, !options.quiet);

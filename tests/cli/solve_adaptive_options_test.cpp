@@ -172,3 +172,38 @@ TEST(SolveAdaptiveOptions, TheSummaryLineCountsTheRounds)
     ASSERT_EQ(off.exitCode, 0) << off.err;
     EXPECT_EQ(off.out.find("adaptive"), std::string::npos) << off.out;
 }
+
+TEST(SolveAdaptiveOptions, TuningASubdivisionThatIsOffIsSolvedWithAWarning)
+{
+    ScratchDir scratch;
+    const fs::path scene = scratch.write("lamp.json", kLampOverFloor); // adaptive.enabled = false
+    const CommandRun run = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--threshold", "0.2", "--min-edge",
+                                          "0.1", scene.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("warning: --threshold, --min-edge have no effect"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--adaptive on turns it on"), std::string::npos) << run.err;
+
+    const CommandRun off = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--adaptive", "off", "--anchoring",
+                                          "off", (kTwoLights).string()});
+    ASSERT_EQ(off.exitCode, 0) << off.err;
+    EXPECT_NE(off.err.find("warning: --anchoring has no effect"), std::string::npos) << off.err;
+    EXPECT_EQ(off.err.find("turns it on"), std::string::npos) << off.err;
+
+    const CommandRun on = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--adaptive", "on", "--threshold",
+                                         "0.2", scene.string()});
+    ASSERT_EQ(on.exitCode, 0) << on.err;
+    EXPECT_EQ(on.err, "");
+}
+
+TEST(SolveAdaptiveOptions, TheReportsEnergyBooksBalanceWithSubdivisionOn)
+{
+    ScratchDir scratch;
+    const json r = solveReport(scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on"}, kTwoLights);
+    ASSERT_GE(r["adaptive"]["rounds"].get<int>(), 1);
+    const json& e = r["energy"];
+    for (int c = 0; c < 3; ++c) {
+        const double emitted = e["emitted"][c].get<double>();
+        const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
+        EXPECT_NEAR(sum, emitted, 1e-9 * emitted) << "channel " << c;
+    }
+}
