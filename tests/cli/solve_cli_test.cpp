@@ -9,6 +9,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -344,4 +345,54 @@ TEST(SolveOutputs, RefusesABadPictureSize)
     const CommandRun run = solve({"--image", (scratch / "a.png").string(), "--size", "0x10", scene.string()});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("--size expects"), std::string::npos) << run.err;
+}
+
+// The README's table of report fields ("The report of one scene is one JSON
+// object") names every field a report has, and the keys of its objects.
+TEST(SolveCommand, TheReadmeDocumentsEveryFieldOfTheReport)
+{
+    const std::string readme = readText(fs::path(REGIO_SOURCE_DIR) / "README.md");
+    const size_t start = readme.find("The report of one scene is one JSON object");
+    ASSERT_NE(start, std::string::npos) << "the README's report section moved";
+    // Rows of the table: backticked names in the first column, and in the
+    // whole row (an object's keys are listed beside it).
+    std::map<std::string, std::set<std::string>> rows;
+    std::istringstream lines(readme.substr(start));
+    std::string line;
+    bool inTable = false;
+    while (std::getline(lines, line)) {
+        if (line.rfind("|", 0) != 0) {
+            if (inTable)
+                break;
+            continue;
+        }
+        inTable = true;
+        const size_t secondBar = line.find('|', 1);
+        std::set<std::string> names, all;
+        for (size_t at = line.find('`'); at != std::string::npos; at = line.find('`', at + 1)) {
+            const size_t end = line.find('`', at + 1);
+            if (end == std::string::npos)
+                break;
+            const std::string name = line.substr(at + 1, end - at - 1);
+            (at < secondBar ? names : all).insert(name);
+            at = end;
+        }
+        for (const std::string& n : names)
+            rows[n] = all;
+    }
+    ASSERT_FALSE(rows.empty());
+
+    Scratch scratch;
+    const CommandRun run = solve({"--iterations", "2", "--hemicube", "40", "--quiet", "--report",
+                                  (scratch / "r.json").string(), (kScenes / "two-lights-room.json").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    for (const auto& [key, value] : r.items()) {
+        ASSERT_TRUE(rows.count(key)) << "the README does not document '" << key << "'";
+        if (value.is_object()) {
+            for (const auto& [inner, unused] : value.items()) {
+                EXPECT_TRUE(rows[key].count(inner)) << "the README does not document '" << key << "." << inner << "'";
+            }
+        }
+    }
 }
