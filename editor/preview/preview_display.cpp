@@ -22,6 +22,16 @@ solver::DisplaySettings displaySettings(const PreviewDisplay& display, const Pre
     return s;
 }
 
+MeshOverlayColours meshOverlayColours(const PreviewDisplay& display)
+{
+    // On false colour (viridis: purple to yellow) the element edges are white
+    // and the anchoring edges magenta, a hue viridis never takes; on the tone-mapped picture dark lines and a
+    // saturated orange that no lit surface of a grey room takes.
+    if (display.falseColour)
+        return {glm::vec4(1.0f, 1.0f, 1.0f, 0.45f), glm::vec4(1.0f, 0.2f, 1.0f, 0.9f)};
+    return {glm::vec4(0.05f, 0.05f, 0.1f, 0.55f), glm::vec4(1.0f, 0.45f, 0.0f, 0.9f)};
+}
+
 PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay& display)
 {
     PreviewLayers out;
@@ -54,16 +64,32 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
         mesh.depthTest = true;
         mesh.order = 1;
         const solver::SolutionMesh& m = *frame.snapshot.mesh;
-        const glm::vec4 colour = display.falseColour ? glm::vec4(1.0f, 1.0f, 1.0f, 0.45f)
-                                                     : glm::vec4(0.05f, 0.05f, 0.1f, 0.55f);
+        const MeshOverlayColours colours = meshOverlayColours(display);
+        auto edgeKey = [](int a, int b) {
+            return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
+        };
+        auto vertex = [&m](int v) { return m.vertices[static_cast<size_t>(v)]; };
         std::unordered_set<uint64_t> seen;
-        seen.reserve(m.triangles.size() * 2);
+        seen.reserve(m.triangles.size() * 2 + m.anchoredTriangles.size());
         for (const auto& t : m.triangles) {
-            for (int k = 0; k < 3; ++k) {
-                const int a = t[static_cast<size_t>(k)], b = t[static_cast<size_t>((k + 1) % 3)];
-                const uint64_t key = (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
-                if (seen.insert(key).second)
-                    mesh.lines.add(m.vertices[static_cast<size_t>(a)], m.vertices[static_cast<size_t>(b)], colour);
+            for (size_t k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                if (seen.insert(edgeKey(a, b)).second) {
+                    mesh.lines.add(vertex(a), vertex(b), colours.element);
+                    ++out.elementEdges;
+                }
+            }
+        }
+        // Element edges hold every side of a coarse element whole, also where
+        // finer neighbours put a vertex on it; what anchoring adds is the fan
+        // from such vertices into the coarse element.
+        for (const auto& t : m.anchoredTriangles) {
+            for (size_t k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                if (seen.insert(edgeKey(a, b)).second) {
+                    mesh.lines.add(vertex(a), vertex(b), colours.anchoring);
+                    ++out.anchoringEdges;
+                }
             }
         }
         out.mesh = std::move(mesh);

@@ -9,6 +9,8 @@
 #include "solver/export.h"
 #include "solver/false_colour.h"
 
+#include <glm/vec4.hpp>
+
 #include <optional>
 #include <vector>
 
@@ -29,9 +31,22 @@ struct PreviewDisplay {
 inline constexpr const char* kSolutionLayer = "preview.solution";
 inline constexpr const char* kMeshLayer = "preview.mesh";
 
+// Colours of the element mesh overlay: element edges, and the anchoring
+// edges (the "special edges" of the paper's Figure 5 that anchoring adds to
+// close T-vertices; edges of SolutionMesh::anchoredTriangles that are no
+// element's edge) in a colour of their own, so anchoring can be told apart
+// from subdivision at a glance.
+struct MeshOverlayColours {
+    glm::vec4 element;
+    glm::vec4 anchoring;
+};
+MeshOverlayColours meshOverlayColours(const PreviewDisplay& display);
+
 struct PreviewLayers {
     ViewportLayer solution;
     std::optional<ViewportLayer> mesh; // when showMesh is on
+    int elementEdges = 0;              // line segments of the mesh layer: element edges
+    int anchoringEdges = 0;            // and anchoring edges (see MeshOverlayColours)
     std::optional<solver::FalseColourLegend> legend;
     double whiteReference = 1.0;       // W/m^2 shown white at exposure 0 (tone mapping)
 };

@@ -133,6 +133,8 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     falseRow->addWidget(m_falseScale, 1);
     displayForm->addRow(falseRow);
     m_mesh = new QCheckBox(tr("Element mesh"));
+    m_mesh->setToolTip(tr("Draw the element edges (where adaptive subdivision split elements) and, in orange "
+                          "(magenta on false colour), the edges anchoring adds to close T-vertices"));
     displayForm->addRow(m_mesh);
     m_legend = new LegendWidget;
     displayForm->addRow(m_legend);
