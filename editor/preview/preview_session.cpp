@@ -146,10 +146,14 @@ void PreviewSession::publish(bool running)
         // adaptive subdivision grew large it would space frames far beyond
         // 250 ms, so while shooting such meshes show flat elements and only
         // the final frame (paused, stopped, finished) is smooth.
-        if (!running || m_smoothSeconds < kSmoothBudgetSeconds) {
+        // The estimate scales the last smooth build by the element count: a
+        // refinement round may have grown the mesh several times since.
+        const double elements = double(prepared.elements.size());
+        if (!running || m_smoothSecondsPerElement * elements < kSmoothBudgetSeconds) {
             const auto smoothStart = std::chrono::steady_clock::now();
             frame->lit = std::make_shared<solver::LitMesh>(solver::smoothLitMesh(prepared, radiosity));
-            m_smoothSeconds = secondsSince(smoothStart);
+            if (elements > 0.0)
+                m_smoothSecondsPerElement = secondsSince(smoothStart) / elements;
         } else {
             frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(prepared, radiosity));
             frame->smooth = false;
@@ -168,6 +172,25 @@ void PreviewSession::publish(bool running)
     m_lastPublish = begin;
     if (!m_framePending.exchange(true))
         m_notify(SessionEvent::Frame);
+}
+
+bool PreviewSession::refinementMayFollow(const solver::SolverStats& stats) const
+{
+    // The schedule of solver/adaptive_refinement.h: a round is due after the
+    // shot of an emitting patch and after every roundInterval-th shot, at
+    // most maxRounds of them.
+    const solver::RefinementPolicy policy;
+    if (!m_solver->settings().adaptive.enabled || stats.adaptiveRounds >= policy.maxRounds)
+        return false;
+    if (policy.roundInterval > 0 && stats.iterations % policy.roundInterval == 0)
+        return true;
+    const int shooter = m_solver->shooting().lastShooter();
+    const solver::PreparedScene& prepared = m_solver->prepared();
+    if (shooter < 0 || size_t(shooter) >= prepared.patches.size())
+        return false;
+    const model::Rgb& emission =
+        prepared.properties[static_cast<size_t>(prepared.patches[static_cast<size_t>(shooter)].properties)].emission;
+    return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0;
 }
 
 void PreviewSession::serveHemicube()
@@ -213,7 +236,10 @@ void PreviewSession::work()
     const auto progress = [&](const solver::SolverStats& stats) {
         record(stats);
         serveHemicube();
-        if (std::chrono::steady_clock::now() - m_lastPublish >= interval)
+        // A refinement round (§5.7) reports no progress and may take a few
+        // hundred ms on a large mesh: when one may follow this shot, the
+        // frame goes out now rather than up to one interval before the round.
+        if (refinementMayFollow(stats) || std::chrono::steady_clock::now() - m_lastPublish >= interval)
             publish(true);
     };
 

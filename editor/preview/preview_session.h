@@ -103,6 +103,8 @@ private:
     void work();
     void publish(bool running);
     void serveHemicube();
+    // Whether a refinement round may run before the next shot (worker thread).
+    bool refinementMayFollow(const solver::SolverStats& stats) const;
     void record(const solver::SolverStats& stats);
 
     Config m_config;
@@ -127,7 +129,7 @@ private:
     std::atomic<bool> m_framePending{false};
     std::chrono::steady_clock::time_point m_lastPublish;
     static constexpr double kSmoothBudgetSeconds = 0.08;
-    double m_smoothSeconds = 0.0; // the last smooth build (worker thread only)
+    double m_smoothSecondsPerElement = 0.0; // of the last smooth build (worker thread only)
     static inline std::atomic<int> s_live{0};
     std::thread m_thread; // last member: starts after everything above exists
 };
