@@ -10,8 +10,10 @@
 //     shot, so a solve that stops (converged, iteration limit) never ends with
 //     new elements that only hold interpolated values, and step(n) and run()
 //     with maxIterations = n refine identically.
-//   - At most `maxRounds` rounds, and the active element count never exceeds
-//     `growthLimit` x the initial count; round k may bring it to at most
+//   - At most `maxRounds` rounds, and no round starts a slice once the active
+//     element count has reached `growthLimit` x the initial count (the last
+//     slice may overshoot by its splits and their grading splits, well under
+//     1 % on the samples); round k may bring it to at most
 //     initial + k/maxRounds of the allowed growth (what a round leaves unused
 //     passes on), so the first light's round cannot take the budget of the
 //     rounds after the other lights' shots. A round splits the selected

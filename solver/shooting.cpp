@@ -114,9 +114,9 @@ EnergyBalance Shooting::energy() const
     return e;
 }
 
-double Shooting::unshotRatio() const
+double Shooting::unshotRatio(const EnergyBalance& books) const
 {
-    const Rgb unshot = energy().unshot;
+    const Rgb& unshot = books.unshot;
     double ratio = 0.0;
     for (int c = 0; c < 3; ++c)
         if (m_emitted[c] > 0.0)
@@ -141,11 +141,11 @@ void Shooting::replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> 
         m_meanReflectance = reflectanceArea / m_totalArea;
 }
 
-Rgb Shooting::ambient() const
+Rgb Shooting::ambient(const EnergyBalance& books) const
 {
     if (m_totalArea <= 0.0)
         return Rgb{0.0};
-    const Rgb unshot = energy().unshot;
+    const Rgb& unshot = books.unshot;
     Rgb result{0.0};
     for (int c = 0; c < 3; ++c) {
         const double rho = std::min(m_meanReflectance[c], 0.999);

@@ -67,11 +67,14 @@ public:
 
     EnergyBalance energy() const;
     // Largest unshot / emitted power over the channels that emit (0 if none).
-    double unshotRatio() const;
+    double unshotRatio() const { return unshotRatio(energy()); }
+    // The same from books already summed (energy() walks every element).
+    double unshotRatio(const EnergyBalance& books) const;
     // Cohen et al. 1988: the unshot power spread uniformly with the mean
     // reflectance's interreflection factor 1/(1 - rho_avg); displaying
     // B_j + rho_j * ambient gives a plausible picture after few shots.
-    Rgb ambient() const;
+    Rgb ambient() const { return ambient(energy()); }
+    Rgb ambient(const EnergyBalance& books) const;
 
     // Form factors of the last shot from its shooter to every element (F_ij),
     // and what it lost: the fractions that hit nothing and back faces.

@@ -116,8 +116,8 @@ void Solver::updateStatsLocked()
     m_stats.patches = static_cast<int>(m_prepared.patches.size());
     m_stats.elements = static_cast<int>(m_prepared.elements.size());
     m_stats.energy = m_shooting->energy();
-    m_stats.ambient = m_shooting->ambient();
-    m_stats.unshotRatio = m_shooting->unshotRatio();
+    m_stats.ambient = m_shooting->ambient(m_stats.energy);
+    m_stats.unshotRatio = m_shooting->unshotRatio(m_stats.energy);
 }
 
 void Solver::noteShot()
