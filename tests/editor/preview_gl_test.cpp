@@ -1,7 +1,8 @@
 // The radiosity preview in a shown window on a real OpenGL context (Xvfb +
 // Mesa): editing while solving never crashes, leaks or loses the document;
 // the UI thread keeps running while the viewport uploads the solution; the
-// --preview-iterations screenshot shows the lit scene.
+// --preview-iterations screenshot shows the lit scene; the mesh overlay draws
+// anchoring edges on screen.
 #include "editor/commands/material_commands.h"
 #include "editor/commands/solver_settings_commands.h"
 #include "editor/main_window.h"
@@ -172,7 +173,6 @@ private slots:
         scene.solver.maxIterations = 100000;
         scene.solver.convergence = 1e-9;
         scene.solver.patchSize = 0.3;
-        scene.solver.adaptive.enabled = false; // see longSample() in preview_runner_test.cpp
         auto window = showWindow(scene, {640, 480});
         PreviewController* preview = window->preview();
         int frames = 0;
@@ -202,6 +202,45 @@ private slots:
         // llvmpipe): the solver's own share is bounded in preview_runner_test
         // (<= 50 ms); with drawing, the view must still refresh within 250 ms.
         QVERIFY2(longest <= 250, qPrintable(QStringLiteral("the UI thread stalled %1 ms").arg(longest)));
+    }
+
+    void theMeshOverlayShowsAnchoringEdgesOnScreenOnlyWithAnchoring()
+    {
+        // Pixels of the anchoring colour (orange, a hue the lit room does not take).
+        auto anchoringPixels = [](bool anchoring) {
+            model::Scene scene = test::loadSample("two-lights-room.json");
+            scene.solver.hemicube = 64;
+            scene.solver.adaptive.enabled = true;
+            scene.solver.adaptive.threshold = 0.02;
+            scene.solver.adaptive.anchoring = anchoring;
+            auto window = showWindow(scene, {640, 480});
+            PreviewController* preview = window->preview();
+            PreviewDisplay display;
+            display.showMesh = true;
+            preview->setDisplay(display);
+            preview->runIterations(6);
+            if (!QTest::qWaitFor([&] { return preview->runner()->state() == PreviewState::Finished &&
+                                              !preview->runner()->frame()->running && preview->layersCurrent(); },
+                                 60000))
+                return -1;
+            if (preview->runner()->frame()->snapshot.stats.adaptiveRounds == 0)
+                return -2;
+            window->viewport()->update();
+            QTest::qWait(100);
+            const QImage frame = window->viewport()->grabFramebuffer();
+            int n = 0;
+            for (int y = 0; y < frame.height(); ++y)
+                for (int x = 0; x < frame.width(); ++x) {
+                    const QRgb p = frame.pixel(x, y);
+                    n += qRed(p) > 200 && qGreen(p) > 80 && qGreen(p) < 150 && qBlue(p) < 70 ? 1 : 0;
+                }
+            return n;
+        };
+        const int with = anchoringPixels(true), without = anchoringPixels(false);
+        qInfo("anchoring-coloured pixels: %d with anchoring, %d without", with, without);
+        QVERIFY2(with > 100, "anchoring edges are drawn");
+        QVERIFY(without >= 0);
+        QVERIFY(without * 10 < with);
     }
 
     void thePreviewIterationsScreenshotShowsTheLitScene()
