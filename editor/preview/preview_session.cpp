@@ -238,8 +238,11 @@ void PreviewSession::work()
         serveHemicube();
         // A refinement round (§5.7) reports no progress and may take a few
         // hundred ms on a large mesh: when one may follow this shot, the
-        // frame goes out now rather than up to one interval before the round.
-        if (refinementMayFollow(stats) || std::chrono::steady_clock::now() - m_lastPublish >= interval)
+        // frame goes out now rather than up to one interval before the round
+        // (not closer than a quarter interval to the last one, for lights of
+        // many patches whose rounds find nothing to split).
+        const auto since = std::chrono::steady_clock::now() - m_lastPublish;
+        if (since >= interval || (since >= interval / 4 && refinementMayFollow(stats)))
             publish(true);
     };
 

@@ -185,10 +185,10 @@ private slots:
 
     void stopIsHonouredWithin100MsWhileARefinementRoundRuns()
     {
-        // A frame is published right after a shot, before the round that
-        // shot made due: a Stop a few ms after the frame of round r lands in
-        // round r + 1 (its first shot and round 1 for the first frame). Each
-        // trial solves again and stops at another moment.
+        // A frame is published right after a light's shot, before the round
+        // that shot made due: a Stop a few ms after the first frame that
+        // shows round r (and a shot) lands in round r + 1. Each trial solves
+        // again and stops at another moment.
         //
         // Bounded here: rounds 1 and 2 (the mesh grows from 21k to 37k
         // elements). A round ranks its candidates (the contrast of every
@@ -208,7 +208,8 @@ private slots:
                 bool scheduled = false;
                 connect(&runner, &PreviewRunner::frameReady, this, [&] {
                     const auto f = runner.frame();
-                    if (scheduled || !f || !f->running || f->snapshot.stats.adaptiveRounds < round)
+                    if (scheduled || !f || !f->running || f->snapshot.stats.iterations < 1 ||
+                        f->snapshot.stats.adaptiveRounds < round)
                         return;
                     scheduled = true;
                     QTimer::singleShot(delay, this, [&] {
