@@ -25,8 +25,9 @@ solver::DisplaySettings displaySettings(const PreviewDisplay& display, const Pre
 MeshOverlayColours meshOverlayColours(const PreviewDisplay& display)
 {
     // On false colour (viridis: purple to yellow) the element edges are white
-    // and the anchoring edges magenta, a hue viridis never takes; on the tone-mapped picture dark lines and a
-    // saturated orange that no lit surface of a grey room takes.
+    // and the anchoring edges magenta, a hue viridis never takes; on the
+    // tone-mapped picture the element edges are dark and the anchoring edges
+    // a saturated orange that stands out from both them and lit surfaces.
     if (display.falseColour)
         return {glm::vec4(1.0f, 1.0f, 1.0f, 0.45f), glm::vec4(1.0f, 0.2f, 1.0f, 0.9f)};
     return {glm::vec4(0.05f, 0.05f, 0.1f, 0.55f), glm::vec4(1.0f, 0.45f, 0.0f, 0.9f)};
