@@ -41,21 +41,26 @@ void AdaptiveRefinement::startRound(std::span<const Rgb> radiosity, std::span<co
         m_mesh->setActiveState(m_sourceElement, radiosity, unshot);
     }
     Round round;
-    round.candidates = m_mesh->selectBySubdivisionCriterion(m_mesh->radiosity(), m_settings.threshold,
-                                                            m_settings.minEdge);
-    // Sharpest borders first (see the top of the header): the budget may end
-    // the round before every candidate is split.
-    std::vector<std::pair<double, int>> ranked;
-    ranked.reserve(round.candidates.size());
-    for (int e : round.candidates)
-        ranked.emplace_back(m_mesh->contrast(e, m_mesh->radiosity()), e);
-    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
-        return a.first != b.first ? a.first > b.first : a.second < b.second;
-    });
-    for (size_t i = 0; i < ranked.size(); ++i)
-        round.candidates[i] = ranked[i].second;
+    round.active = m_mesh->activeElements();
     m_round = std::move(round);
     ++m_roundsStarted;
+}
+
+bool AdaptiveRefinement::selectSlice()
+{
+    Round& round = *m_round;
+    const size_t end = std::min(round.active.size(),
+                                round.scanned + static_cast<size_t>(std::max(1, m_policy.selectSliceSize)));
+    // The §5.7 criterion (AdaptiveMesh::selectBySubdivisionCriterion), with
+    // the contrast kept for the ranking. The mesh does not change while the
+    // round selects, so slices judge exactly what one pass would.
+    for (; round.scanned < end; ++round.scanned) {
+        const int e = round.active[round.scanned];
+        const double c = m_mesh->contrast(e, m_mesh->radiosity());
+        if (c > m_settings.threshold && m_mesh->canSplit(e, m_settings.minEdge))
+            round.selected.emplace_back(c, e);
+    }
+    return round.scanned < round.active.size();
 }
 
 AdaptiveRefinement::Outcome AdaptiveRefinement::runRound(std::span<const Rgb> radiosity, std::span<const Rgb> unshot,
@@ -68,11 +73,28 @@ AdaptiveRefinement::Outcome AdaptiveRefinement::runRound(std::span<const Rgb> ra
         startRound(radiosity, unshot);
     }
     Round& round = *m_round;
+    // Every call does at least one slice of work before it looks at the flag,
+    // so a solve cancelled over and over still gets through its round.
+    const auto cancelled = [cancel] { return cancel && cancel->load(); };
+    while (selectSlice())
+        if (cancelled())
+            return Outcome::Cancelled;
+    if (!round.ranked) {
+        // Sharpest borders first (see the top of the header): the budget may
+        // end the round before every candidate is split.
+        std::sort(round.selected.begin(), round.selected.end(), [](const auto& a, const auto& b) {
+            return a.first != b.first ? a.first > b.first : a.second < b.second;
+        });
+        round.candidates.reserve(round.selected.size());
+        for (const auto& [contrast, e] : round.selected)
+            round.candidates.push_back(e);
+        round.selected = {};
+        round.active = {};
+        round.ranked = true;
+    }
     const size_t slice = static_cast<size_t>(std::max(1, m_policy.sliceSize));
     const int limit = roundLimit();
     while (round.next < round.candidates.size() && m_activeElements < limit) {
-        if (cancel && cancel->load())
-            return Outcome::Cancelled;
         const size_t count = std::min(slice, round.candidates.size() - round.next);
         const int splits = m_mesh->subdivide(std::span<const int>(round.candidates).subspan(round.next, count),
                                              m_settings.minEdge);
@@ -80,6 +102,8 @@ AdaptiveRefinement::Outcome AdaptiveRefinement::runRound(std::span<const Rgb> ra
         m_activeElements += 3 * splits;
         round.splits += splits;
         round.next += count;
+        if (round.next < round.candidates.size() && m_activeElements < limit && cancelled())
+            return Outcome::Cancelled;
     }
     const int splits = round.splits;
     m_round.reset();

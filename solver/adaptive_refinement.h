@@ -20,10 +20,11 @@
 //     elements in order of falling contrast, so when the budget runs out the
 //     sharpest borders (shadows) have been refined and the gentle falloff of
 //     a large light has not.
-//   - A round splits in slices of `sliceSize` candidates and checks the cancel
-//     flag between slices. A cancelled round keeps what it split and resumes
-//     with the next slice before the next shot: the result is the same as
-//     that of an uncancelled solve, only later.
+//   - A round judges the criterion in slices of `selectSliceSize` elements
+//     and splits in slices of `sliceSize` candidates, and looks at the cancel
+//     flag after each slice (a few ms). A cancelled round keeps what it did
+//     and resumes with the next slice before the next shot: the result is the
+//     same as that of an uncancelled solve, only later.
 //
 // New elements take their parent's values through AdaptiveMesh (radiosity
 // interpolated from the parent and its neighbours, mean-preserving; unshot
@@ -46,6 +47,7 @@ struct RefinementPolicy {
     int maxRounds = 8;
     double growthLimit = 4.0; // active elements <= growthLimit x initial elements
     int sliceSize = 64;   // candidates split between two looks at the cancel flag
+    int selectSliceSize = 2048; // elements judged by the criterion between two looks
 };
 
 class AdaptiveRefinement {
@@ -81,12 +83,20 @@ public:
     const AdaptiveMesh& mesh() const { return *m_mesh; }
 
 private:
+    // A round in its three phases, each resumable after a cancel: the
+    // criterion over the active elements (in slices), the ranking, the splits.
     struct Round {
-        std::vector<int> candidates; // hierarchy elements, by falling contrast
+        std::vector<int> active;                      // active elements when the round began
+        size_t scanned = 0;                           // of `active`, judged so far
+        std::vector<std::pair<double, int>> selected; // (contrast, element) meeting the criterion
+        bool ranked = false;
+        std::vector<int> candidates;                  // hierarchy elements, by falling contrast
         size_t next = 0;
         int splits = 0;
     };
     void startRound(std::span<const Rgb> radiosity, std::span<const Rgb> unshot);
+    // Judges the next slice of the round's active elements; false when all are.
+    bool selectSlice();
 
     model::AdaptiveSettings m_settings;
     RefinementPolicy m_policy;

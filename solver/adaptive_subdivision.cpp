@@ -450,12 +450,32 @@ std::vector<OutputTriangle> AdaptiveMesh::outputTriangles() const
 ActiveScene AdaptiveMesh::activeScene() const
 {
     ActiveScene result;
-    result.scene = m_scene;
     PreparedScene& s = result.scene;
+    // Everything but the element arrays, which are rebuilt below: copying the
+    // hierarchy's elements, pieces and piece vertices only to drop them would
+    // cost as much as the rebuild.
+    s.faces = m_scene.faces;
+    s.properties = m_scene.properties;
+    s.regionalNodes = m_scene.regionalNodes;
+    s.regionalRoot = m_scene.regionalRoot;
+    s.regions = m_scene.regions;
+    s.nodes = m_scene.nodes;
+    s.fragments = m_scene.fragments;
+    s.fragmentPoints = m_scene.fragmentPoints;
+    s.vertices = m_scene.vertices;
+    s.patches = m_scene.patches;
+    s.bounds = m_scene.bounds;
+    s.patchSize = m_scene.patchSize;
+    s.elementsPerPatch = m_scene.elementsPerPatch;
+    s.stats = m_scene.stats;
+    const std::vector<int> active = activeElements();
     std::vector<std::vector<int>> byPatch(s.patches.size());
-    for (int e : activeElements())
+    for (int e : active)
         byPatch[size_t(m_scene.elements[size_t(e)].patch)].push_back(e);
-    s.elements.clear();
+    s.elements.reserve(active.size());
+    result.sourceElement.reserve(active.size());
+    result.radiosity.reserve(active.size());
+    result.unshot.reserve(active.size());
     for (InputFace& f : s.faces)
         f.elements.clear();
     for (size_t p = 0; p < s.patches.size(); ++p) {

@@ -135,16 +135,26 @@ void Solver::noteShot()
 
 bool Solver::refineIfDue(const std::atomic<bool>* cancel)
 {
-    if (!m_refinement || !m_refinement->roundDue())
+    if (!m_refinement || (!m_handOverPending && !m_refinement->roundDue()))
         return true;
     const auto start = Clock::now();
-    // Only this thread writes the shooter's arrays: reading them unlocked is safe.
-    const AdaptiveRefinement::Outcome outcome =
-        m_refinement->runRound(m_shooting->radiosity(), m_shooting->unshotRadiosity(), cancel);
-    if (outcome != AdaptiveRefinement::Outcome::Refined) {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_stats.adaptiveSeconds += secondsSince(start);
-        return outcome != AdaptiveRefinement::Outcome::Cancelled;
+    if (!m_handOverPending) {
+        // Only this thread writes the shooter's arrays: reading them unlocked is safe.
+        const AdaptiveRefinement::Outcome outcome =
+            m_refinement->runRound(m_shooting->radiosity(), m_shooting->unshotRadiosity(), cancel);
+        if (outcome != AdaptiveRefinement::Outcome::Refined) {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stats.adaptiveSeconds += secondsSince(start);
+            return outcome != AdaptiveRefinement::Outcome::Cancelled;
+        }
+        m_handOverPending = true;
+        // The hand-over below cannot stop part-way: a cancel that came during
+        // the splits leaves it for the next call, before the next shot.
+        if (cancel && cancel->load()) {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stats.adaptiveSeconds += secondsSince(start);
+            return false;
+        }
     }
     // The new active scene and its mesh are built without the lock; readers
     // keep seeing the previous mesh with its radiosity until the swap.
@@ -164,6 +174,7 @@ bool Solver::refineIfDue(const std::atomic<bool>* cancel)
     m_prepared = std::move(active.scene);
     m_shooting->replaceElementState(std::move(active.radiosity), std::move(active.unshot));
     m_mesh = std::move(mesh);
+    m_handOverPending = false;
     m_stats.adaptiveRounds = m_refinement->rounds();
     m_stats.adaptiveSeconds += secondsSince(start);
     updateStatsLocked();

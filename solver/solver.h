@@ -160,6 +160,7 @@ private:
     void noteShot();
 
     std::unique_ptr<AdaptiveRefinement> m_refinement; // empty when adaptive subdivision is off
+    bool m_handOverPending = false; // a round split elements; the shooter has not got them yet
 
     EffectiveSettings m_settings;
     PreparedScene m_prepared;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <thread>
 
@@ -302,6 +303,53 @@ TEST(AdaptiveSolver, TheAnchoredTriangulationHasNoTVertices)
             }
         EXPECT_EQ(tVertices, 0);
     }
+}
+
+TEST(AdaptiveSolver, ASolveCancelledAgainAndAgainEndsWhereAnUninterruptedOneDoes)
+{
+    model::Scene scene = test::boxUnderLamp();
+    scene.solver.adaptive.threshold = 0.05;
+    scene.solver.adaptive.minEdge = 0.01;
+    SolverOptions options;
+    options.maxIterations = 40;
+    options.convergence = 0.0;
+
+    auto straight = Solver::create(scene, options);
+    ASSERT_TRUE(straight.solver);
+    const std::atomic<bool> never{false};
+    ASSERT_EQ(straight.solver->run({}, never), StopReason::MaxIterations);
+
+    // Stops land anywhere: in a shot, in a round's selection or splits, or
+    // between its splits and the hand-over of the grown mesh.
+    auto interrupted = Solver::create(scene, options);
+    ASSERT_TRUE(interrupted.solver);
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> done{false};
+    std::thread toggler([&] {
+        for (int i = 0; !done.load(); ++i) {
+            std::this_thread::sleep_for(std::chrono::microseconds(100 + 71 * (i % 13)));
+            cancel = true;
+            std::this_thread::sleep_for(std::chrono::microseconds(20));
+            cancel = false;
+        }
+    });
+    int cancelled = 0;
+    StopReason stop = StopReason::Cancelled;
+    for (int call = 0; call < 200000 && stop == StopReason::Cancelled; ++call) {
+        stop = interrupted.solver->run({}, cancel);
+        cancelled += stop == StopReason::Cancelled ? 1 : 0;
+    }
+    done = true;
+    toggler.join();
+    ASSERT_EQ(stop, StopReason::MaxIterations);
+    EXPECT_GT(cancelled, 0);
+
+    const SolutionSnapshot a = straight.solver->snapshot();
+    const SolutionSnapshot b = interrupted.solver->snapshot();
+    EXPECT_EQ(a.stats.iterations, b.stats.iterations);
+    EXPECT_EQ(a.stats.adaptiveRounds, b.stats.adaptiveRounds);
+    ASSERT_EQ(a.mesh->triangles, b.mesh->triangles);
+    EXPECT_EQ(a.radiosity, b.radiosity);
 }
 
 } // namespace
