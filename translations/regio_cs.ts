@@ -2595,6 +2595,10 @@ Soubor na disku zůstal beze změny.</translation>
         <source>White at exposure 0: %1 W/m²</source>
         <translation>Bílá při expozici 0: %1 W/m²</translation>
     </message>
+    <message>
+        <source>Draw the element edges (where adaptive subdivision split elements) and, in orange (magenta on false colour), the edges anchoring adds to close T-vertices</source>
+        <translation>Kreslit hrany elementů (kde adaptivní dělení elementy rozdělilo) a oranžově (ve falešných barvách purpurově) hrany, které ukotvení přidává k uzavření T-vrcholů</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::Viewport</name>
