@@ -7,6 +7,7 @@
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
 #include "editor/preview/preview_runner.h"
+#include "preview_test_support.h"
 #include "editor/preview/solver_dock.h"
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
@@ -30,25 +31,8 @@ using namespace regio::editor;
 
 namespace {
 
-bool waitForState(PreviewRunner& runner, PreviewState state, int timeoutMs = 120000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (runner.state() != state && clock.elapsed() < timeoutMs)
-        QTest::qWait(2);
-    return runner.state() == state;
-}
-
-// Finished, and the final frame (made after the last shot) has arrived.
-bool waitForFinal(PreviewRunner& runner, int timeoutMs = 120000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    auto done = [&] { return runner.state() == PreviewState::Finished && runner.frame() && !runner.frame()->running; };
-    while (!done() && clock.elapsed() < timeoutMs)
-        QTest::qWait(5);
-    return done();
-}
+using test::waitForFinal;
+using test::waitForState;
 
 // The two-light room refining in earnest: the light's shadow borders split
 // at every round. A coarse hemicube keeps the shots short; the rounds are
@@ -218,7 +202,7 @@ private slots:
                 });
                 runner.start(bigRoundsRoom());
                 QTRY_VERIFY_WITH_TIMEOUT(stoppedAt, 60000);
-                QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
+                QVERIFY(waitForState(runner, PreviewState::Finished, 5000, /*pollMs*/ 2));
                 const qint64 ms = clock.elapsed();
                 latencies.push_back(ms);
                 QVERIFY(waitForFinal(runner, 10000));

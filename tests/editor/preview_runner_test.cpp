@@ -9,6 +9,7 @@
 #include "editor/preview/preview_export.h"
 #include "editor/preview/preview_inspector.h"
 #include "editor/preview/preview_runner.h"
+#include "preview_test_support.h"
 #include "editor/preview/solver_presets.h"
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
@@ -37,25 +38,8 @@ namespace {
 
 std::unique_ptr<MainWindow> makeWindow() { return test::quietWindow(); }
 
-bool waitForState(PreviewRunner& runner, PreviewState state, int timeoutMs = 120000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (runner.state() != state && clock.elapsed() < timeoutMs)
-        QTest::qWait(5);
-    return runner.state() == state;
-}
-
-// Finished, and the final frame (made after the last shot) has arrived.
-bool waitForFinal(PreviewRunner& runner, int timeoutMs = 120000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    auto done = [&] { return runner.state() == PreviewState::Finished && runner.frame() && !runner.frame()->running; };
-    while (!done() && clock.elapsed() < timeoutMs)
-        QTest::qWait(5);
-    return done();
-}
+using test::waitForFinal;
+using test::waitForState;
 
 // The draft preset on a sample: seconds to solve, thousands of elements.
 model::Scene draftSample(const char* name)
