@@ -34,6 +34,16 @@ std::unique_ptr<MainWindow> showWindow(const QString& scene)
     window->resize(1200, 800);
     if (!window->openFile(scene))
         qFatal("cannot open %s", qPrintable(scene));
+    // Outside the room, looking in through the front wall (the viewport
+    // culls back faces): every region's faces are in view, whatever camera
+    // the sample stores.
+    model::Camera outside;
+    outside.position = {3.0, 1.6, -2.5};
+    outside.target = {3.0, 1.2, 2.0};
+    outside.up = {0.0, 1.0, 0.0};
+    outside.fovY = 60.0;
+    window->viewport()->camera().setFromSceneCamera(outside);
+    window->viewport()->update();
     test::showAndWaitForFrame(*window);
     return window;
 }
