@@ -12,6 +12,7 @@
 #include "editor/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
+#include "preview_test_support.h"
 #include "window_test_support.h"
 #include "model/edit_materials.h"
 
@@ -177,23 +178,15 @@ private slots:
         PreviewController* preview = window->preview();
         int frames = 0;
         connect(preview, &PreviewController::layersApplied, this, [&] { ++frames; });
-        QElapsedTimer clock;
-        qint64 last = 0, longest = 0;
-        QTimer ticker;
-        ticker.setInterval(2);
-        connect(&ticker, &QTimer::timeout, this, [&] {
-            const qint64 now = clock.elapsed();
-            longest = std::max(longest, now - last);
-            last = now;
-        });
+        test::UiGapMeter gaps;
         preview->run();
         QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Running, 60000);
         QTRY_VERIFY_WITH_TIMEOUT(preview->layersCurrent(), 10000);
         frames = 0;
-        clock.start();
-        ticker.start();
+        gaps.start();
         QTest::qWait(3000);
-        ticker.stop();
+        gaps.stop();
+        const qint64 longest = gaps.longestMs();
         preview->runner()->stop();
         qInfo("longest UI gap %lld ms with the viewport drawing (%d solution updates in 3 s, %d elements)", longest, frames,
               preview->runner()->frame()->snapshot.stats.elements);

@@ -258,26 +258,18 @@ private slots:
         PreviewDisplay display;
         display.showMesh = true; // the heaviest layers
         preview->setDisplay(display);
-        QElapsedTimer clock;
-        qint64 last = 0, longest = 0;
-        QTimer ticker;
-        ticker.setInterval(2);
-        connect(&ticker, &QTimer::timeout, this, [&] {
-            const qint64 now = clock.elapsed();
-            longest = std::max(longest, now - last);
-            last = now;
-        });
+        test::UiGapMeter gaps;
         int layers = 0;
         connect(preview, &PreviewController::layersApplied, this, [&] { ++layers; });
         preview->run();
         QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
-        clock.start();
-        ticker.start();
+        gaps.start();
         QTest::qWait(3000);
         preview->runner()->stop();
         QVERIFY(waitForState(*preview->runner(), PreviewState::Finished, 5000));
         QTest::qWait(100);
-        ticker.stop();
+        gaps.stop();
+        const qint64 longest = gaps.longestMs();
         qInfo("longest UI gap %lld ms over 3 s of solving, %d layer updates", longest, layers);
         QVERIFY(layers >= 6);
         QVERIFY(window->viewport()->hasLayer(QString::fromLatin1(kSolutionLayer)));

@@ -5,6 +5,9 @@
 
 #include <QElapsedTimer>
 #include <QTest>
+#include <QTimer>
+
+#include <algorithm>
 
 namespace regio::editor::test {
 
@@ -29,5 +32,35 @@ inline bool waitForFinal(PreviewRunner& runner, int timeoutMs = 120000)
         QTest::qWait(5);
     return done();
 }
+
+// The longest the UI thread went without serving a 2 ms timer between
+// start() and stop(): how long the event loop was blocked.
+class UiGapMeter {
+public:
+    UiGapMeter()
+    {
+        m_ticker.setInterval(2);
+        QObject::connect(&m_ticker, &QTimer::timeout, [this] {
+            const qint64 now = m_clock.elapsed();
+            m_longest = std::max(m_longest, now - m_last);
+            m_last = now;
+        });
+    }
+    void start()
+    {
+        m_last = 0;
+        m_longest = 0;
+        m_clock.start();
+        m_ticker.start();
+    }
+    void stop() { m_ticker.stop(); }
+    qint64 longestMs() const { return m_longest; }
+
+private:
+    QTimer m_ticker;
+    QElapsedTimer m_clock;
+    qint64 m_last = 0;
+    qint64 m_longest = 0;
+};
 
 } // namespace regio::editor::test
