@@ -12,11 +12,11 @@
 // snapshot(), stats() and faceResults() may be called from any thread.
 #include "model/diagnostic.h"
 #include "model/scene.h"
-#include "solver/adaptive_refinement.h"
-#include "solver/prepare.h"
-#include "solver/prepared_scene.h"
-#include "solver/shooting.h"
-#include "solver/visibility.h"
+#include "solver/shooting/adaptive_refinement.h"
+#include "solver/prepare/prepare.h"
+#include "solver/prepare/prepared_scene.h"
+#include "solver/shooting/shooting.h"
+#include "solver/visibility/visibility.h"
 
 #include <array>
 #include <atomic>
@@ -55,7 +55,7 @@ struct EffectiveSettings {
     int elementsPerPatch = 4;
     VisibilityMode visibility = VisibilityMode::Painter;
     RegionsMode regions = RegionsMode::Authored;
-    model::AdaptiveSettings adaptive; // when the mesh is refined: solver/adaptive_refinement.h
+    model::AdaptiveSettings adaptive; // when the mesh is refined: solver/shooting/adaptive_refinement.h
 };
 
 enum class StopReason { None, Converged, MaxIterations, NothingToShoot, Cancelled };

@@ -1,7 +1,7 @@
 #include "editor/bsp/bsp_analysis.h"
 
-#include "editor/scene_document.h"
-#include "solver/prepare.h"
+#include "editor/document/scene_document.h"
+#include "solver/prepare/prepare.h"
 
 #include <QPromise>
 #include <QThreadPool>

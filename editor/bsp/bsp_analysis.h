@@ -8,8 +8,8 @@
 // edits the scene sixty times a second costs at most two preparations.
 #include "model/diagnostic.h"
 #include "model/scene.h"
-#include "solver/bsp_figures.h"
-#include "solver/prepared_scene.h"
+#include "solver/authoring/bsp_figures.h"
+#include "solver/prepare/prepared_scene.h"
 
 #include <QFutureWatcher>
 #include <QObject>

@@ -3,11 +3,11 @@
 #include "editor/bsp/bsp_layers.h"
 #include "editor/bsp/bsp_order_dock.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/commands/bsp_order_commands.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/commands/bsp_order_commands.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
-#include "model/region_clip.h"
+#include "model/geometry/region_clip.h"
 
 #include <QAction>
 #include <QApplication>

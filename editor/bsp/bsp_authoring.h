@@ -2,12 +2,12 @@
 // BSP root orders (paper §5.3) as an authoring feature: the BSP menu, the BSP
 // order dock, the fragment and node-plane layers, the face pick tools and the
 // painter-order playback. Every edit is one undo command on the document
-// (editor/commands/bsp_order_commands.h), so orders are saved with the scene
+// (editor/document/commands/bsp_order_commands.h), so orders are saved with the scene
 // and reproduced exactly by regio-solve. The public edits work without the
 // dock, so tests drive the same code the dock's buttons do.
 #include "editor/bsp/bsp_analysis.h"
 #include "editor/bsp/face_pick_tool.h"
-#include "solver/bsp_suggest.h"
+#include "solver/authoring/bsp_suggest.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #include "editor/bsp/bsp_layers.h"
 
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,8 +5,8 @@
 // (§5.6, Appendix A) as a colour ramp over the element triangles.
 #include "editor/viewport/viewport_layers.h"
 #include "model/scene.h"
-#include "solver/painter_order.h"
-#include "solver/prepared_scene.h"
+#include "solver/visibility/painter_order.h"
+#include "solver/prepare/prepared_scene.h"
 
 #include <glm/vec4.hpp>
 

@@ -2,8 +2,8 @@
 
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #include "editor/bsp/face_pick_tool.h"
 
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 
 #include <QMouseEvent>

@@ -1,9 +1,9 @@
 #include "editor/bsp/painter_playback.h"
 
 #include "editor/bsp/bsp_layers.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,8 +1,8 @@
 #include "editor/docks/diagnostics_dock.h"
 
 #include "editor/docks/diagnostics_model.h"
-#include "editor/scene_document.h"
-#include "model/validation.h"
+#include "editor/document/scene_document.h"
+#include "model/validation/validation.h"
 
 #include <QHeaderView>
 #include <QLabel>

@@ -2,7 +2,7 @@
 // Live validation: the model's validateScene runs shortly after every change
 // (debounced, so a drag validates once it pauses) and lists what it finds.
 // Activating a row selects the offending element.
-#include "editor/selection.h"
+#include "editor/document/selection.h"
 
 #include <QDockWidget>
 #include <QTimer>

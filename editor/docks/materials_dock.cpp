@@ -1,11 +1,11 @@
 #include "editor/docks/materials_dock.h"
 
-#include "editor/authoring.h"
-#include "editor/commands/material_commands.h"
+#include "editor/objects/authoring.h"
+#include "editor/document/commands/material_commands.h"
 #include "editor/docks/colour_button.h"
 #include "editor/docks/vector_editor.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>

@@ -1,14 +1,14 @@
 #include "editor/docks/properties_dock.h"
 
-#include "editor/authoring.h"
-#include "editor/commands/material_commands.h"
-#include "editor/commands/object_commands.h"
-#include "editor/commands/part_commands.h"
-#include "editor/commands/region_commands.h"
-#include "editor/commands/solver_settings_commands.h"
+#include "editor/objects/authoring.h"
+#include "editor/document/commands/material_commands.h"
+#include "editor/document/commands/object_commands.h"
+#include "editor/document/commands/part_commands.h"
+#include "editor/document/commands/region_commands.h"
+#include "editor/document/commands/solver_settings_commands.h"
 #include "editor/docks/vector_editor.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 
 #include <QCheckBox>

@@ -1,9 +1,9 @@
 #include "editor/docks/scene_tree_dock.h"
 
-#include "editor/authoring.h"
+#include "editor/objects/authoring.h"
 #include "editor/docks/scene_tree_model.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 
 #include <QHeaderView>
 #include <QItemSelectionModel>

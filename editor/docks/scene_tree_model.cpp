@@ -1,6 +1,6 @@
 #include "editor/docks/scene_tree_model.h"
 
-#include "editor/qt_conversions.h"
+#include "editor/document/qt_conversions.h"
 
 #include <QApplication>
 #include <QIcon>

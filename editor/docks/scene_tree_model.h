@@ -3,7 +3,7 @@
 // material swatches. Rebuilt when objects or materials change. Parts can be
 // dragged onto another object (regroup) or onto empty space (a new object of
 // their own); the drop is handed to a callback that pushes the undo command.
-#include "editor/selection.h"
+#include "editor/document/selection.h"
 #include "model/scene.h"
 
 #include <QAbstractItemModel>

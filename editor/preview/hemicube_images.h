@@ -3,7 +3,7 @@
 // "a hemicube view of a chosen patch"): every element in its own colour,
 // the sky black, back faces (blockers that receive nothing) dark grey.
 // Built on the preview's worker thread; Qt-free so it can be.
-#include "solver/hemicube_view.h"
+#include "solver/visibility/hemicube_view.h"
 
 #include <array>
 #include <cstdint>

@@ -6,7 +6,7 @@
 #include "editor/preview/preview_inspector.h"
 #include "editor/preview/solver_dock.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 
 #include <QAction>

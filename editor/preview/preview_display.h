@@ -6,8 +6,8 @@
 // Plain functions of their inputs, so they run on a pool thread.
 #include "editor/preview/preview_session.h"
 #include "editor/viewport/viewport_layers.h"
-#include "solver/export.h"
-#include "solver/false_colour.h"
+#include "output/export.h"
+#include "output/false_colour.h"
 
 #include <glm/vec4.hpp>
 

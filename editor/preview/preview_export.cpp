@@ -1,8 +1,8 @@
 #include "editor/preview/preview_export.h"
 
 #include "editor/preview/solver_presets.h"
-#include "model/scene_json.h"
-#include "solver/export.h"
+#include "model/io/scene_json.h"
+#include "output/export.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

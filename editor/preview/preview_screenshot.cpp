@@ -1,6 +1,6 @@
 #include "editor/preview/preview_screenshot.h"
 
-#include "editor/main_window.h"
+#include "editor/app/main_window.h"
 #include "editor/preview/preview_controller.h"
 
 #include <QCoreApplication>

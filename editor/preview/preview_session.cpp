@@ -1,8 +1,8 @@
 #include "editor/preview/preview_session.h"
 
-#include "solver/hemicube_view.h"
-#include "solver/shooting.h"
-#include "solver/vertex_radiosity.h"
+#include "solver/visibility/hemicube_view.h"
+#include "solver/shooting/shooting.h"
+#include "output/vertex_radiosity.h"
 
 #include <cmath>
 
@@ -176,7 +176,7 @@ void PreviewSession::publish(bool running)
 
 bool PreviewSession::refinementMayFollow(const solver::SolverStats& stats) const
 {
-    // The schedule of solver/adaptive_refinement.h: a round is due after the
+    // The schedule of solver/shooting/adaptive_refinement.h: a round is due after the
     // shot of an emitting patch and after every roundInterval-th shot, at
     // most maxRounds of them.
     const solver::RefinementPolicy policy;

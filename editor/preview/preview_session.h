@@ -12,7 +12,7 @@
 #include "editor/preview/hemicube_images.h"
 #include "model/diagnostic.h"
 #include "model/scene.h"
-#include "solver/lit_mesh.h"
+#include "output/lit_mesh.h"
 #include "solver/solver.h"
 
 #include <atomic>

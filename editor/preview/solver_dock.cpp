@@ -1,7 +1,7 @@
 #include "editor/preview/solver_dock.h"
 
-#include "editor/commands/solver_settings_commands.h"
-#include "editor/scene_document.h"
+#include "editor/document/commands/solver_settings_commands.h"
+#include "editor/document/scene_document.h"
 
 #include <QAction>
 #include <QCheckBox>

@@ -1,6 +1,6 @@
 #include "editor/preview/solver_presets.h"
 
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 
 #include <QCoreApplication>
 #include <QtCore/qcoreapplication.h>

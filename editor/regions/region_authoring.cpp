@@ -1,19 +1,19 @@
 #include "editor/regions/region_authoring.h"
 
-#include "editor/authoring.h"
-#include "editor/commands/region_clip_command.h"
-#include "editor/commands/region_commands.h"
+#include "editor/objects/authoring.h"
+#include "editor/document/commands/region_clip_command.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/diagnostics_model.h"
-#include "editor/qt_conversions.h"
+#include "editor/document/qt_conversions.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
-#include "model/region_clip.h"
+#include "model/geometry/region_clip.h"
 
 #include <QAction>
 #include <QApplication>

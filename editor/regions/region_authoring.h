@@ -8,13 +8,13 @@
 //    separating planes of the regional tree (§5.2),
 //  - "Clip Part to Regions", the fix for a straddling part, also offered on
 //    the diagnostics dock's entries,
-//  - automatic regions (solver/region_proposal.h) previewed with their
+//  - automatic regions (solver/authoring/region_proposal.h) previewed with their
 //    figures before they are accepted (one undo step) or discarded.
 // Every edit is public and works without dialogs, so tests drive the same
 // code paths the menus do.
 #include "editor/regions/region_layers.h"
 #include "model/scene.h"
-#include "solver/region_proposal.h"
+#include "solver/authoring/region_proposal.h"
 
 #include <QObject>
 

@@ -1,10 +1,10 @@
 #include "editor/regions/region_box_tool.h"
 
-#include "editor/commands/region_commands.h"
-#include "editor/qt_conversions.h"
+#include "editor/document/commands/region_commands.h"
+#include "editor/document/qt_conversions.h"
 #include "editor/regions/region_drag_command.h"
 #include "editor/regions/region_layers.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/picking.h"
 #include "editor/viewport/viewport.h"
 

@@ -14,7 +14,7 @@
 // Middle-button and Alt navigation keep working.
 #include "editor/viewport/camera.h"
 #include "editor/viewport/viewport_tool.h"
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <QObject>
 #include <QPointF>

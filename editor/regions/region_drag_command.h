@@ -3,7 +3,7 @@
 // SetRegionBox whose steps merge only within one drag (the same serial), so
 // every drag is one undo step of its own even when the same box is dragged
 // twice in a row, and never merges with a numeric edit in the properties dock.
-#include "editor/commands/region_commands.h"
+#include "editor/document/commands/region_commands.h"
 
 namespace regio::editor {
 

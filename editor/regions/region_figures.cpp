@@ -1,8 +1,8 @@
 #include "editor/regions/region_figures.h"
 
 #include "editor/regions/region_layers.h"
-#include "editor/scene_document.h"
-#include "model/region_clip.h"
+#include "editor/document/scene_document.h"
+#include "model/geometry/region_clip.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

@@ -1,12 +1,12 @@
 #pragma once
 // What each region holds and what it costs, for the Regions dock. Contents
 // (parts and faces in a box) follow validation's rule for "a face is in the
-// region" (model/region_clip.h); fragments are the solver's own figures
-// (solver/bsp_figures.h, equal to `regio-solve solve --report`), computed on
+// region" (model/geometry/region_clip.h); fragments are the solver's own figures
+// (solver/authoring/bsp_figures.h, equal to `regio-solve solve --report`), computed on
 // a worker thread from a snapshot of the scene, a short pause after the
 // last edit, so dragging a box never waits for the BSP build.
 #include "model/scene.h"
-#include "solver/bsp_figures.h"
+#include "solver/authoring/bsp_figures.h"
 
 #include <QObject>
 #include <QTimer>

@@ -1,7 +1,7 @@
 #include "editor/regions/region_layers.h"
 
-#include "model/region_clip.h"
-#include "model/validation.h"
+#include "model/geometry/region_clip.h"
+#include "model/validation/validation.h"
 
 #include <QColor>
 

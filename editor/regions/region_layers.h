@@ -5,9 +5,9 @@
 // tree (paper §5.2, Figure 3) and the resize handles of a selected box. Pure
 // functions of the scene, so tests check them without a window.
 #include "editor/viewport/viewport_layers.h"
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 #include "model/scene.h"
-#include "solver/regional_tree.h"
+#include "solver/prepare/regional_tree.h"
 
 #include <glm/vec4.hpp>
 

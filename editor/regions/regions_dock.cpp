@@ -1,10 +1,10 @@
 #include "editor/regions/regions_dock.h"
 
-#include "editor/commands/region_commands.h"
-#include "editor/qt_conversions.h"
+#include "editor/document/commands/region_commands.h"
+#include "editor/document/qt_conversions.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 
 #include <QAction>
 #include <QHBoxLayout>

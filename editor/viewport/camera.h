@@ -2,7 +2,7 @@
 // The viewport's orbit camera: a target point, a distance and two angles.
 // Orbit, pan, zoom and framing move it; fly mode moves the eye and drags the
 // target along. Pure maths (no GL, no widgets) so tests can check it.
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 #include "model/scene.h"
 
 #include <glm/mat4x4.hpp>

@@ -3,7 +3,7 @@
 // three points on surfaces; they define the cutting plane. This class holds
 // the points and draws them; the viewport feeds it clicks.
 #include "editor/viewport/overlay_lines.h"
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <optional>
 #include <vector>

@@ -2,7 +2,7 @@
 // Coloured line lists for the viewport's overlays (grid, region boxes, gizmo,
 // clip plane): xyz rgba per vertex, two vertices per segment (or three per
 // triangle for the filled overlays).
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 #include "model/scene.h"
 
 #include <glm/vec4.hpp>

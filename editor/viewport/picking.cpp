@@ -1,6 +1,6 @@
 #include "editor/viewport/picking.h"
 
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,7 +3,7 @@
 // its flat normal, per-vertex material colours, face outlines and normal
 // whiskers. Geometry and colours are separate arrays so a material edit
 // re-uploads colours only.
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 #include "model/scene.h"
 
 #include <string>

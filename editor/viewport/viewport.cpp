@@ -2,7 +2,7 @@
 // view operations (framing, standard views, tools).
 #include "editor/viewport/viewport.h"
 
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

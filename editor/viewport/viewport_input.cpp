@@ -2,8 +2,8 @@
 // gizmo drags, clip-tool clicks, fly mode).
 #include "editor/viewport/viewport.h"
 
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/picking.h"
 
 #include <QGuiApplication>

@@ -18,11 +18,11 @@
 //
 // Three repetitions each; the machine's load shows in the spread, so read the
 // medians the summary prints. Not a test: timings are never pass/fail.
-#include "model/scene_json.h"
-#include "model/validation.h"
-#include "solver/adaptive_refinement.h"
-#include "solver/prepare.h"
-#include "solver/shooting.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
+#include "solver/shooting/adaptive_refinement.h"
+#include "solver/prepare/prepare.h"
+#include "solver/shooting/shooting.h"
 #include "solver/solver.h"
 
 #include <benchmark/benchmark.h>

@@ -9,9 +9,9 @@
 // preparation (regional tree, BSP trees, meshing) is not timed. Five
 // repetitions each; the machine's load shows in the spread, so read medians.
 // Not a test: timings are never pass/fail.
-#include "model/scene_json.h"
-#include "model/validation.h"
-#include "solver/prepare.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
+#include "solver/prepare/prepare.h"
 #include "solver/solver.h"
 
 #include <benchmark/benchmark.h>

@@ -1,12 +1,12 @@
 // Whole-part authoring as the menus drive it: each action is one undo step
 // that leaves a valid scene.
-#include "editor/authoring.h"
-#include "editor/main_window.h"
-#include "editor/preferences_dialog.h"
-#include "editor/primitive_dialog.h"
+#include "editor/objects/authoring.h"
+#include "editor/app/main_window.h"
+#include "editor/app/preferences_dialog.h"
+#include "editor/objects/primitive_dialog.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
-#include "model/validation.h"
+#include "model/validation/validation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

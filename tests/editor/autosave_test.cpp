@@ -1,7 +1,7 @@
 // Crash recovery: unsaved changes are autosaved; after a crash the next
 // start finds them and restores them.
-#include "editor/autosave.h"
-#include "editor/commands/object_commands.h"
+#include "editor/app/autosave.h"
+#include "editor/document/commands/object_commands.h"
 #include "editor_test_support.h"
 
 #include <QFile>

@@ -6,17 +6,17 @@
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/bsp_layers.h"
 #include "editor/bsp/bsp_order_dock.h"
-#include "editor/main_window.h"
-#include "editor/qt_conversions.h"
-#include "editor/scene_document.h"
+#include "editor/app/main_window.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "window_test_support.h"
-#include "model/scene_json.h"
+#include "model/io/scene_json.h"
 
 #include "../cli/command_run.h"
 #include "../solver/furnished_room.h"
-#include "solver/region_proposal.h"
+#include "solver/authoring/region_proposal.h"
 
 #include <QAbstractItemModel>
 #include <QComboBox>

@@ -5,14 +5,14 @@
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/face_pick_tool.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/main_window.h"
-#include "editor/scene_document.h"
+#include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "window_test_support.h"
-#include "model/region_clip.h"
-#include "solver/painter_order.h"
+#include "model/geometry/region_clip.h"
+#include "solver/visibility/painter_order.h"
 #include "solver/solver.h"
 
 #include <QColor>

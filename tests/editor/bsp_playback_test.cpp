@@ -5,14 +5,14 @@
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/bsp_layers.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/main_window.h"
-#include "editor/scene_document.h"
+#include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "window_test_support.h"
-#include "solver/region_proposal.h"
+#include "solver/authoring/region_proposal.h"
 #include "solver/solver.h"
-#include "solver/traversal.h"
+#include "solver/visibility/traversal.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -36,7 +36,7 @@ std::unique_ptr<MainWindow> makeWindow(const QString& scene)
 
 // The solver's order on the solver's own preparation of the scene (a
 // Solver made from the same scene, as regio-solve makes it): the node walk of
-// solver/traversal.h, and the painted elements of solver/painter_order.h,
+// solver/visibility/traversal.h, and the painted elements of solver/visibility/painter_order.h,
 // which the solver's tests hold equal to what Visibility paints.
 void compareWithSolver(const solver::PainterOrder& order, const solver::PreparedScene& prepared,
                        const model::Vec3& eye, const model::Plane* cull)

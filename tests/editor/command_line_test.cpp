@@ -1,5 +1,5 @@
 // regio [SCENE.json] [--screenshot FILE.png] [--size WxH]
-#include "editor/command_line.h"
+#include "editor/app/command_line.h"
 
 #include <QCoreApplication>
 #include <QTest>

@@ -7,9 +7,9 @@
 #include "editor/docks/scene_tree_dock.h"
 #include "editor/docks/scene_tree_model.h"
 #include "editor/docks/vector_editor.h"
-#include "editor/main_window.h"
-#include "editor/commands/part_commands.h"
-#include "editor/commands/region_commands.h"
+#include "editor/app/main_window.h"
+#include "editor/document/commands/part_commands.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor_test_support.h"
 
 #include <QDoubleSpinBox>

@@ -1,10 +1,10 @@
 #pragma once
 // Shared fixtures of the editor tests: sample scenes, a small hand-built
 // scene, and the do / undo / redo check every command test uses.
-#include "editor/scene_document.h"
-#include "model/edit_objects.h"
-#include "model/primitives.h"
-#include "model/scene_json.h"
+#include "editor/document/scene_document.h"
+#include "model/edit/edit_objects.h"
+#include "model/geometry/primitives.h"
+#include "model/io/scene_json.h"
 
 #include <QStandardPaths>
 #include <QTest>

@@ -1,7 +1,7 @@
 // The main window: title, file workflow, recent files, settings.
-#include "editor/commands/object_commands.h"
-#include "editor/main_window.h"
-#include "editor/recent_files.h"
+#include "editor/document/commands/object_commands.h"
+#include "editor/app/main_window.h"
+#include "editor/app/recent_files.h"
 #include "editor_test_support.h"
 
 #include <QAction>

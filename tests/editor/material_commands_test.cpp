@@ -1,5 +1,5 @@
 // Undo commands on materials.
-#include "editor/commands/material_commands.h"
+#include "editor/document/commands/material_commands.h"
 #include "editor_test_support.h"
 
 #include <QSignalSpy>

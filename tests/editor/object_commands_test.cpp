@@ -1,5 +1,5 @@
 // Undo commands on objects: every one does, undoes and redoes exactly.
-#include "editor/commands/object_commands.h"
+#include "editor/document/commands/object_commands.h"
 #include "editor_test_support.h"
 
 #include <QSignalSpy>

@@ -1,7 +1,7 @@
 // Undo commands on parts and faces.
-#include "editor/commands/part_commands.h"
+#include "editor/document/commands/part_commands.h"
 #include "editor_test_support.h"
-#include "model/validation.h"
+#include "model/validation/validation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,13 +3,13 @@
 // its own, the anchoring edges; Stop is honoured within 100 ms also while a
 // refinement round runs; the solver dock's adaptive controls change what the
 // preview solves; the status bar counts the elements of the growing mesh.
-#include "editor/main_window.h"
+#include "editor/app/main_window.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
 #include "editor/preview/preview_runner.h"
 #include "preview_test_support.h"
 #include "editor/preview/solver_dock.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "window_test_support.h"

@@ -3,18 +3,18 @@
 // the UI thread keeps running while the viewport uploads the solution; the
 // --preview-iterations screenshot shows the lit scene; the mesh overlay draws
 // anchoring edges on screen.
-#include "editor/commands/material_commands.h"
-#include "editor/commands/solver_settings_commands.h"
-#include "editor/main_window.h"
+#include "editor/document/commands/material_commands.h"
+#include "editor/document/commands/solver_settings_commands.h"
+#include "editor/app/main_window.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "preview_test_support.h"
 #include "window_test_support.h"
-#include "model/edit_materials.h"
+#include "model/edit/edit_materials.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -1,8 +1,8 @@
 // The radiosity preview's runner and controller (issue 7) without a GL
 // context: equality with regio-solve, stop/pause/reset, the UI thread's
 // responsiveness while solving, the inspector, the hemicube view, exports.
-#include "editor/commands/solver_settings_commands.h"
-#include "editor/main_window.h"
+#include "editor/document/commands/solver_settings_commands.h"
+#include "editor/app/main_window.h"
 #include "editor/preview/convergence_plot.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
@@ -11,7 +11,7 @@
 #include "editor/preview/preview_runner.h"
 #include "preview_test_support.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 #include "window_test_support.h"

@@ -1,13 +1,13 @@
 // The solver dock's settings (issue 7, point 1): every control edits through
 // SetSolverSettings (undoable, saved in the file), presets, the dry run, and
 // the --preview-iterations option.
-#include "editor/command_line.h"
-#include "editor/commands/solver_settings_commands.h"
+#include "editor/app/command_line.h"
+#include "editor/document/commands/solver_settings_commands.h"
 #include "editor/preview/solver_dock.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor_test_support.h"
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 
 #include <QAction>
 #include <QCheckBox>

@@ -1,12 +1,12 @@
 // A long random sequence of edits through every command family, undone to
 // the start, must give back exactly the scene that was loaded; redone to the
 // end, exactly the scene the edits made.
-#include "editor/commands/bsp_order_commands.h"
-#include "editor/commands/material_commands.h"
-#include "editor/commands/object_commands.h"
-#include "editor/commands/part_commands.h"
-#include "editor/commands/region_commands.h"
-#include "editor/commands/solver_settings_commands.h"
+#include "editor/document/commands/bsp_order_commands.h"
+#include "editor/document/commands/material_commands.h"
+#include "editor/document/commands/object_commands.h"
+#include "editor/document/commands/part_commands.h"
+#include "editor/document/commands/region_commands.h"
+#include "editor/document/commands/solver_settings_commands.h"
 #include "editor_test_support.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,6 +1,6 @@
 // Undo commands on regions and their BSP root-patch orders.
-#include "editor/commands/bsp_order_commands.h"
-#include "editor/commands/region_commands.h"
+#include "editor/document/commands/bsp_order_commands.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor_test_support.h"
 
 #include <QSignalSpy>

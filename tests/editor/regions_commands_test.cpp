@@ -1,19 +1,19 @@
 // Region authoring edits: resizing by handle drags (one undo step per drag),
 // clipping a straddling part to the regions, accepting or discarding a
 // proposal of automatic regions, and all of it surviving save and load.
-#include "editor/commands/region_clip_command.h"
-#include "editor/commands/part_commands.h"
-#include "editor/commands/region_commands.h"
+#include "editor/document/commands/region_clip_command.h"
+#include "editor/document/commands/part_commands.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_drag_command.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
-#include "model/region_clip.h"
-#include "solver/region_proposal.h"
+#include "model/geometry/region_clip.h"
+#include "solver/authoring/region_proposal.h"
 
 #include <QAction>
 #include <QLabel>

@@ -2,20 +2,20 @@
 // fragment counts per region, selection kept in step with the document, the
 // regional tree as the solver builds it, the viewport layers, and the live
 // straddle diagnostic with its one-click fix.
-#include "editor/commands/region_commands.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/diagnostics_model.h"
-#include "editor/qt_conversions.h"
+#include "editor/document/qt_conversions.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
-#include "solver/bsp_figures.h"
-#include "solver/prepare.h"
-#include "solver/region_proposal.h"
+#include "solver/authoring/bsp_figures.h"
+#include "solver/prepare/prepare.h"
+#include "solver/authoring/region_proposal.h"
 
 #include "../cli/command_run.h"
 #include "../solver/furnished_room.h"

@@ -1,12 +1,12 @@
 // The region tool driven by real mouse events on a shown viewport (Xvfb +
 // Mesa): drawing a box on the ground grid, selecting it by a click, resizing
 // it by a face handle (one undo step per drag), and Esc.
-#include "editor/commands/region_commands.h"
-#include "editor/qt_conversions.h"
+#include "editor/document/commands/region_commands.h"
+#include "editor/document/qt_conversions.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_layers.h"
-#include "editor/scene_document.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"
 

@@ -1,8 +1,8 @@
 // SceneDocument: the one owner of a scene, its undo stack, selection, file
 // path and modified flag.
-#include "editor/commands/object_commands.h"
-#include "editor/commands/part_commands.h"
-#include "editor/scene_document.h"
+#include "editor/document/commands/object_commands.h"
+#include "editor/document/commands/part_commands.h"
+#include "editor/document/scene_document.h"
 #include "editor_test_support.h"
 
 #include <QFile>

@@ -1,5 +1,5 @@
 // Undo commands on the solver settings and the stored camera.
-#include "editor/commands/solver_settings_commands.h"
+#include "editor/document/commands/solver_settings_commands.h"
 #include "editor_test_support.h"
 
 #include <QSignalSpy>

@@ -1,6 +1,6 @@
 // The Czech translation is embedded, complete, and used when chosen.
-#include "editor/main_window.h"
-#include "editor/translations.h"
+#include "editor/app/main_window.h"
+#include "editor/app/translations.h"
 #include "editor_test_support.h"
 
 #include <QDir>

@@ -1,9 +1,9 @@
 // The viewport on a real OpenGL 3.3 context (Xvfb + Mesa): the screenshot
 // command, where a known red face lands, picking by mouse, and buffers that
 // follow the document's change signals.
-#include "editor/commands/material_commands.h"
-#include "editor/main_window.h"
-#include "editor/scene_document.h"
+#include "editor/document/commands/material_commands.h"
+#include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "editor_test_support.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Main windows and editor processes for the editor tests.
-#include "editor/main_window.h"
+#include "editor/app/main_window.h"
 #include "editor/viewport/viewport.h"
 
 #include <QProcess>

@@ -1,4 +1,4 @@
-#include "model/convex_decomposition.h"
+#include "model/geometry/convex_decomposition.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // The scene every edit test starts from, and the two checks every edit test
 // makes: the inverse gives back the original scene, and a refusal leaves the
 // scene untouched.
-#include "model/primitives.h"
+#include "model/geometry/primitives.h"
 #include "model/result.h"
 #include "model/scene.h"
 

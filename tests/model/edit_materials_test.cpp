@@ -1,4 +1,4 @@
-#include "model/edit_materials.h"
+#include "model/edit/edit_materials.h"
 
 #include "edit_fixture.h"
 

@@ -1,6 +1,6 @@
-#include "model/edit_objects.h"
+#include "model/edit/edit_objects.h"
 
-#include "model/validation.h"
+#include "model/validation/validation.h"
 
 #include "edit_fixture.h"
 #include "part_checks.h"

@@ -1,6 +1,6 @@
-#include "model/edit_parts.h"
+#include "model/edit/edit_parts.h"
 
-#include "model/validation.h"
+#include "model/validation/validation.h"
 
 #include "edit_fixture.h"
 #include "part_checks.h"

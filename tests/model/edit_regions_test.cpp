@@ -1,4 +1,4 @@
-#include "model/edit_regions.h"
+#include "model/edit/edit_regions.h"
 
 #include "edit_fixture.h"
 

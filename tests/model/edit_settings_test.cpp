@@ -1,4 +1,4 @@
-#include "model/edit_settings.h"
+#include "model/edit/edit_settings.h"
 
 #include "edit_fixture.h"
 

@@ -2,11 +2,11 @@
 // inverse needs. A long random sequence of edits (including refused ones),
 // each recorded with its inverse, unwound in reverse gives back the scene it
 // started from, exactly.
-#include "model/edit_materials.h"
-#include "model/edit_objects.h"
-#include "model/edit_parts.h"
-#include "model/edit_regions.h"
-#include "model/edit_settings.h"
+#include "model/edit/edit_materials.h"
+#include "model/edit/edit_objects.h"
+#include "model/edit/edit_parts.h"
+#include "model/edit/edit_regions.h"
+#include "model/edit/edit_settings.h"
 
 #include "edit_fixture.h"
 

@@ -2,9 +2,9 @@
 // Checks shared by the primitive, plane-cut and edit tests: the properties
 // every part the model builds must have (closed, manifold, outward, planar
 // convex faces, unique ids), stated once.
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 #include "model/scene.h"
-#include "model/winged_edge.h"
+#include "model/geometry/winged_edge.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "model/plane_cut.h"
+#include "model/geometry/plane_cut.h"
 
-#include "model/primitives.h"
+#include "model/geometry/primitives.h"
 #include "part_checks.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "model/primitives.h"
+#include "model/geometry/primitives.h"
 
 #include "part_checks.h"
 

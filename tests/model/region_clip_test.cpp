@@ -1,13 +1,13 @@
 // Clipping a part to the region boxes: the one-click fix for validation's
 // "straddles region boundaries" warning. The pieces lie in one region each,
 // keep the area of the part, and the returned record undoes it exactly.
-#include "model/region_clip.h"
+#include "model/geometry/region_clip.h"
 
-#include "model/edit_regions.h"
-#include "model/primitives.h"
-#include "model/scene_json.h"
-#include "model/validation.h"
-#include "model/winged_edge.h"
+#include "model/edit/edit_regions.h"
+#include "model/geometry/primitives.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
+#include "model/geometry/winged_edge.h"
 
 #include <gtest/gtest.h>
 

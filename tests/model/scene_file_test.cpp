@@ -1,7 +1,7 @@
 // Scene files on disk: loading reports unreadable files as diagnostics, and
 // saving is atomic - whatever goes wrong, the previous file stays intact and
 // no temporary file is left behind.
-#include "model/scene_json.h"
+#include "model/io/scene_json.h"
 
 #include <gtest/gtest.h>
 

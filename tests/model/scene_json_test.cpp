@@ -1,6 +1,6 @@
 // The scene file format: what the reader accepts, what it refuses and where
 // it says the problem is, and the canonical text the writer produces.
-#include "model/scene_json.h"
+#include "model/io/scene_json.h"
 
 #include "broken_file_table.h"
 

@@ -1,8 +1,8 @@
 // One test per validation rule: each starts from a clean scene, changes the
 // least that triggers the rule, and expects exactly that rule's diagnostic.
-#include "model/validation.h"
+#include "model/validation/validation.h"
 
-#include "model/scene_json.h"
+#include "model/io/scene_json.h"
 
 #include <gtest/gtest.h>
 

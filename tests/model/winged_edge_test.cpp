@@ -1,6 +1,6 @@
-#include "model/winged_edge.h"
+#include "model/geometry/winged_edge.h"
 
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// The refinement schedule of the solver (solver/adaptive_refinement.h): when
+// The refinement schedule of the solver (solver/shooting/adaptive_refinement.h): when
 // a round is due, how far a round may grow the mesh, which elements go first,
 // and that a cancelled round resumes to the very mesh an uninterrupted one
 // makes.
-#include "solver/adaptive_refinement.h"
-#include "solver/prepare.h"
-#include "solver/shooting.h"
+#include "solver/shooting/adaptive_refinement.h"
+#include "solver/prepare/prepare.h"
+#include "solver/shooting/shooting.h"
 
 #include "adaptive_scenes.h"
 

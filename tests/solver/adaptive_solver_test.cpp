@@ -2,7 +2,7 @@
 // shots where the gradient is, the energy books stay exact, snapshots stay
 // consistent while the mesh changes under a running solve, and the per-face
 // answers agree with a uniformly fine mesh.
-#include "solver/report.h"
+#include "output/report.h"
 #include "solver/solver.h"
 #include "adaptive_scenes.h"
 

@@ -1,10 +1,10 @@
-// Adaptive subdivision with anchoring (solver/adaptive_subdivision.h, paper
+// Adaptive subdivision with anchoring (solver/shooting/adaptive_subdivision.h, paper
 // §5.7 and Figure 5): fine elements where the radiosity changes, a graded and
 // conforming mesh, conserved area and unshot power, paintable pieces.
-#include "solver/adaptive_subdivision.h"
-#include "solver/pieces.h"
-#include "solver/prepare.h"
-#include "solver/shooting.h"
+#include "solver/shooting/adaptive_subdivision.h"
+#include "solver/prepare/pieces.h"
+#include "solver/prepare/prepare.h"
+#include "solver/shooting/shooting.h"
 #include "solver_test_scenes.h"
 
 #include <gtest/gtest.h>

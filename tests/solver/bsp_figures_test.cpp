@@ -1,11 +1,11 @@
 // BSP figures: the solver's own numbers, per region and for the scene, for the
 // authored regions and the single-BSP baseline, cheap enough to follow edits.
-#include "solver/bsp_figures.h"
+#include "solver/authoring/bsp_figures.h"
 
 #include "furnished_room.h"
-#include "model/edit_regions.h"
-#include "model/scene_json.h"
-#include "solver/report.h"
+#include "model/edit/edit_regions.h"
+#include "model/io/scene_json.h"
+#include "output/report.h"
 #include "solver/solver.h"
 
 #include <gtest/gtest.h>

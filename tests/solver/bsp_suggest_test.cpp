@@ -1,15 +1,15 @@
 // Suggested BSP root orders (§5.3, Thibault and Naylor 1987): the order the
 // greedy heuristic proposes is reproduced exactly by the solver's builder,
 // names only faces of its region, and splits no more than scene order.
-#include "solver/bsp_suggest.h"
+#include "solver/authoring/bsp_suggest.h"
 
 #include "furnished_room.h"
-#include "model/edit_regions.h"
-#include "model/primitives.h"
-#include "model/region_clip.h"
-#include "model/scene_json.h"
-#include "model/validation.h"
-#include "solver/bsp_tree.h"
+#include "model/edit/edit_regions.h"
+#include "model/geometry/primitives.h"
+#include "model/geometry/region_clip.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
+#include "solver/prepare/bsp_tree.h"
 
 #include <gtest/gtest.h>
 

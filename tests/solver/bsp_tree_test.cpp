@@ -1,6 +1,6 @@
 // Regional BSP trees (paper §5.3): validity, area bookkeeping, the author's
 // root order, coplanar faces and statistics.
-#include "solver/bsp_tree.h"
+#include "solver/prepare/bsp_tree.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // glTF 2.0 export: the .gltf + .bin pair and the .glb container, read back
 // and checked against the mesh (the Khronos validator runs over the same
 // kinds of files in the gltf_validator test).
-#include "solver/export_gltf.h"
+#include "output/export_gltf.h"
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"

@@ -1,6 +1,6 @@
 // OBJ export with vertex colours ("v x y z r g b"), normals and one group per
 // input face, read back by a small OBJ reader.
-#include "solver/export_obj.h"
+#include "output/export_obj.h"
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"

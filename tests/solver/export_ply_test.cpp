@@ -1,6 +1,6 @@
 // PLY export: binary little endian with display colours (uchar) and the raw
 // radiosity (float), read back by a small PLY reader.
-#include "solver/export_ply.h"
+#include "output/export_ply.h"
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"

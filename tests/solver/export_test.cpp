@@ -1,11 +1,11 @@
 // Writing a solution's outputs: the model format chosen by the file name,
 // display settings, and the picture; end to end on the Cornell box sample.
-#include "solver/export.h"
+#include "output/export.h"
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"
-#include "model/scene_json.h"
-#include "solver/legend_overlay.h"
+#include "model/io/scene_json.h"
+#include "output/legend_overlay.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

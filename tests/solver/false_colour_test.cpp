@@ -1,6 +1,6 @@
 // False colour: the viridis ramp, linear and logarithmic scales, automatic
 // ranges and the legend given as data.
-#include "solver/false_colour.h"
+#include "output/false_colour.h"
 
 #include "lit_mesh_fixtures.h"
 

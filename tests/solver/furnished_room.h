@@ -8,7 +8,7 @@
 // Random numbers come from std::mt19937's raw output (its sequence is fixed
 // by the standard), not from the library's distributions (whose algorithms
 // differ between standard libraries), so every platform builds the same scene.
-#include "model/primitives.h"
+#include "model/geometry/primitives.h"
 #include "model/scene.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Projection and scan conversion onto the hemicube (paper §5.6): clipping
 // against the five face frusta, one pixel-centre rule, shared edges exact.
-#include "solver/hemicube_raster.h"
-#include "solver/item_buffer.h"
+#include "solver/visibility/hemicube_raster.h"
+#include "solver/visibility/item_buffer.h"
 
 #include <gtest/gtest.h>
 

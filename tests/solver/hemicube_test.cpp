@@ -1,5 +1,5 @@
 // The hemicube's delta form factor table (paper §5.6; Cohen & Greenberg 1985).
-#include "solver/hemicube.h"
+#include "solver/visibility/hemicube.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The hemicube view of one patch (solver/hemicube_view.h): the item buffer a
+// The hemicube view of one patch (solver/visibility/hemicube_view.h): the item buffer a
 // shot of that patch would paint, for the editor's hemicube window.
-#include "solver/hemicube_view.h"
+#include "solver/visibility/hemicube_view.h"
 #include "solver/solver.h"
 #include "solver_test_scenes.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Small lit meshes for the output tests (exports, tone mapping, the software
 // renderer), built directly: quads and triangles with chosen radiosity.
-#include "solver/lit_mesh.h"
+#include "output/lit_mesh.h"
 
 #include <glm/geometric.hpp>
 

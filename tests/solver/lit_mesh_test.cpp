@@ -1,6 +1,6 @@
 // The lit mesh: the solver's element solution turned into the triangle mesh
 // every output draws from, flat (one value per element).
-#include "solver/lit_mesh.h"
+#include "output/lit_mesh.h"
 
 #include "lit_mesh_fixtures.h"
 #include "solver/solver.h"

@@ -1,9 +1,9 @@
 // Patches to elements (paper §5.5) and the storage order the painter relies on.
-#include "solver/meshing.h"
+#include "solver/prepare/meshing.h"
 
-#include "solver/bsp_tree.h"
-#include "solver/pieces.h"
-#include "solver/strip_triangulation.h"
+#include "solver/prepare/bsp_tree.h"
+#include "solver/prepare/pieces.h"
+#include "solver/prepare/strip_triangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -3,19 +3,19 @@
 //
 // The solver's Visibility has no hook that records its order, so the tests
 // check the playback three ways against it: the node sequence equals the
-// traversal the painter calls (backToFrontNodes, solver/traversal.h); the
+// traversal the painter calls (backToFrontNodes, solver/visibility/traversal.h); the
 // number of elements and of culled regions equals the painter's own counts
 // for the same shooter; and painting the playback's elements in sequence with
 // the solver's rasteriser gives the painter's item buffer pixel for pixel
 // (any two overlapping elements in the wrong order would differ).
-#include "solver/painter_order.h"
+#include "solver/visibility/painter_order.h"
 
-#include "model/scene_json.h"
-#include "solver/hemicube_raster.h"
-#include "solver/item_buffer.h"
-#include "solver/prepare.h"
-#include "solver/traversal.h"
-#include "solver/visibility.h"
+#include "model/io/scene_json.h"
+#include "solver/visibility/hemicube_raster.h"
+#include "solver/visibility/item_buffer.h"
+#include "solver/prepare/prepare.h"
+#include "solver/visibility/traversal.h"
+#include "solver/visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Element pieces (solver/pieces.h): elements cut by the separating and BSP
+// Element pieces (solver/prepare/pieces.h): elements cut by the separating and BSP
 // planes exactly where their faces were cut, without loss and without cracks.
-#include "solver/pieces.h"
-#include "solver/prepare.h"
+#include "solver/prepare/pieces.h"
+#include "solver/prepare/prepare.h"
 #include "solver_test_scenes.h"
 
 #include <gtest/gtest.h>

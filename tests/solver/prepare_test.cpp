@@ -1,9 +1,9 @@
 // Scene preparation end to end: regions in the three modes, the face table,
 // the author's root order, diagnostics, and the sample scenes.
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 
-#include "model/primitives.h"
-#include "model/scene_json.h"
+#include "model/geometry/primitives.h"
+#include "model/io/scene_json.h"
 #include "random_scenes.h"
 
 #include <gtest/gtest.h>

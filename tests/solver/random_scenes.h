@@ -1,7 +1,7 @@
 #pragma once
 // Test scenes for the preparation tests: a room split into authored regions,
 // with random boxes standing in each region's cell.
-#include "model/primitives.h"
+#include "model/geometry/primitives.h"
 #include "model/scene.h"
 
 #include <random>

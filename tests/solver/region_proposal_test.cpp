@@ -1,13 +1,13 @@
 // Proposed regions: boxes tiling the scene along planes that pass between the
 // parts, each with a suggested BSP order; compared with the solver's
 // automatic (patch-count) regions and with the single-BSP baseline.
-#include "solver/region_proposal.h"
+#include "solver/authoring/region_proposal.h"
 
 #include "furnished_room.h"
-#include "model/primitives.h"
-#include "model/region_clip.h"
-#include "model/scene_json.h"
-#include "model/validation.h"
+#include "model/geometry/primitives.h"
+#include "model/geometry/region_clip.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The regional tree of separating planes (paper §5.2) and the assignment of
 // faces to its cells with clipping (the Warnock variant, §3).
-#include "solver/regional_tree.h"
+#include "solver/prepare/regional_tree.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // with its authored regions, with none (one classic BSP tree, the baseline)
 // and with automatic regions gives the same radiosity on every input face.
 //
-// The mesh is made per input face (solver/meshing.h), so patches and
+// The mesh is made per input face (solver/prepare/meshing.h), so patches and
 // elements, and with them the shooters and receivers, are identical in every
 // mode; region planes and BSP splits only cut elements into the pieces the
-// painter paints (solver/pieces.h). What remains between the modes is the
+// painter paints (solver/prepare/pieces.h). What remains between the modes is the
 // order the painter paints in and the pixels along cut edges, which the
 // crack-free cuts keep to rounding, and the shooting order that may differ
 // in ties. Every face of non-zero area is compared, however small.

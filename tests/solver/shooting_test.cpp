@@ -1,7 +1,7 @@
 // Progressive shooting (paper §5.6; Cohen et al. 1988) and the solver API
 // around it: shooter choice, the radiosity update, stopping, back faces,
 // snapshots while solving and cancellation.
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 #include "solver/solver.h"
 #include "solver_test_scenes.h"
 

@@ -1,10 +1,10 @@
 // The software picture: projection from a model::Camera, z-buffer, near-plane
 // clipping, Gouraud shading, and PNG output that decodes to the same pixels.
-#include "solver/software_render.h"
+#include "output/software_render.h"
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"
-#include "solver/png_writer.h"
+#include "output/png_writer.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Small scenes for the solver tests, built directly as model values: quads,
 // boxes and rooms with chosen materials. Independent of the file format.
 #include "model/scene.h"
-#include "model/scene_json.h"
+#include "model/io/scene_json.h"
 
 #include <algorithm>
 #include <array>

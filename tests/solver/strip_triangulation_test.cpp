@@ -1,7 +1,7 @@
 // Strip triangulation of convex faces into triangle patches (paper §5.4).
-#include "solver/strip_triangulation.h"
+#include "solver/prepare/strip_triangulation.h"
 
-#include "model/geometry.h"
+#include "model/geometry/geometry.h"
 
 #include <gtest/gtest.h>
 

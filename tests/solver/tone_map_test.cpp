@@ -1,6 +1,6 @@
 // Tone mapping: exposure, white reference, gamma and sRGB encoding, clamping
 // and the ambient term, applied to display copies only.
-#include "solver/tone_map.h"
+#include "output/tone_map.h"
 
 #include "lit_mesh_fixtures.h"
 

@@ -1,9 +1,9 @@
 // The back-to-front walk of the regional tree and the region BSP trees
 // (paper Appendix A, with back faces kept as blockers).
-#include "solver/traversal.h"
+#include "solver/visibility/traversal.h"
 
 #include "random_scenes.h"
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 
 #include <gtest/gtest.h>
 

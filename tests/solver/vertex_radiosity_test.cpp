@@ -1,8 +1,8 @@
 // Smooth vertex radiosity (paper §6): element values averaged at the vertices
 // of each plane-and-material group, T-vertex-free output for Gouraud shading.
-#include "solver/vertex_radiosity.h"
+#include "output/vertex_radiosity.h"
 
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 #include "furnished_room.h"
 #include "solver_test_scenes.h"
 

@@ -1,8 +1,8 @@
 // Hemicube visibility: the painter's back-to-front order (paper §5.6,
 // Appendix A) against the z-buffer reference, on scenes with several regions.
-#include "solver/prepare.h"
+#include "solver/prepare/prepare.h"
 #include "solver/solver.h"
-#include "solver/visibility.h"
+#include "solver/visibility/visibility.h"
 #include "solver_test_scenes.h"
 
 #include <gtest/gtest.h>

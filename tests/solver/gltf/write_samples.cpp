@@ -3,9 +3,9 @@
 // binary containers, 16- and 32-bit indices, an empty solution, a file name
 // that needs URI escaping, tone-mapped and false colours) including a solved
 // Cornell box. Usage: gltf_samples OUTPUT_FOLDER
-#include "model/scene_json.h"
-#include "solver/export.h"
-#include "solver/export_gltf.h"
+#include "model/io/scene_json.h"
+#include "output/export.h"
+#include "output/export_gltf.h"
 
 #include "../lit_mesh_fixtures.h"
 

@@ -1,0 +1,56 @@
+// regio-solve: the headless batch companion of the Regio editor. main() only
+// dispatches to the subcommands declared in commands.h.
+#include "cli/commands.h"
+
+#include "model/io/scene_json.h"
+
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace {
+
+const char* const kUsage =
+    "Usage: regio-solve COMMAND [ARGUMENTS...]\n"
+    "\n"
+    "Batch tools for Regio radiosity scenes (no display needed).\n"
+    "\n"
+    "Commands:\n"
+    "  check SCENE.json...   check scene files and print every problem found\n"
+    "  solve SCENE.json ...  compute the radiosity solution of a scene\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help            show this help\n"
+    "  --version             show the version and the scene format it reads\n"
+    "\n"
+    "'regio-solve COMMAND --help' describes a command's options.\n"
+    "Exit status: 0 success, 1 the scene has errors, 2 usage error or unreadable file.\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    using namespace regio::cli;
+    if (argc < 2) {
+        std::cerr << kUsage;
+        return kExitFailure;
+    }
+    const std::string command = argv[1];
+    if (command == "-h" || command == "--help" || command == "help") {
+        std::cout << kUsage;
+        return kExitOk;
+    }
+    if (command == "--version") {
+        std::cout << "regio-solve " << REGIO_VERSION << " (scene format "
+                  << regio::model::kSceneFormatTag << " version "
+                  << regio::model::kSceneFormatVersion << ")\n";
+        return kExitOk;
+    }
+    if (command == "check")
+        return runCheck(argc - 1, argv + 1);
+    if (command == "solve")
+        return runSolve(argc - 1, argv + 1);
+    std::cerr << "regio-solve: unknown command '" << command << "'\n"
+              << "Try 'regio-solve --help'.\n";
+    return kExitFailure;
+}

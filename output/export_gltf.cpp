@@ -1,0 +1,238 @@
+#include "output/export_gltf.h"
+#include "output/export_support.h"
+
+#include "model/io/atomic_file.h"
+
+#include <glm/common.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+
+namespace regio::solver {
+
+namespace {
+
+using nlohmann::json;
+
+// glTF enumerations (glTF 2.0 specification, 5.1 and 3.6).
+constexpr int kFloat = 5126;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+constexpr int kTriangles = 4;
+
+constexpr uint32_t kGlbMagic = 0x46546C67;    // "glTF"
+constexpr uint32_t kGlbJsonChunk = 0x4E4F534A; // "JSON"
+constexpr uint32_t kGlbBinChunk = 0x004E4942;  // "BIN\0"
+
+void appendU32(std::string& out, uint32_t v)
+{
+    for (int i = 0; i < 4; ++i)
+        out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+}
+
+void appendU16(std::string& out, uint16_t v)
+{
+    out.push_back(static_cast<char>(v & 0xFF));
+    out.push_back(static_cast<char>(v >> 8));
+}
+
+void appendFloat(std::string& out, float v)
+{
+    appendU32(out, std::bit_cast<uint32_t>(v));
+}
+
+void padTo4(std::string& out, char fill)
+{
+    while (out.size() % 4 != 0)
+        out.push_back(fill);
+}
+
+// Percent-encodes everything but RFC 3986 unreserved characters, so a file
+// name with spaces or non-ASCII letters is still a valid URI reference.
+std::string uriEncode(const std::string& name)
+{
+    static const char* hex = "0123456789ABCDEF";
+    std::string out;
+    for (unsigned char c : name) {
+        if (std::isalnum(c) != 0 || c == '-' || c == '_' || c == '.' || c == '~') {
+            out.push_back(static_cast<char>(c));
+        } else {
+            out.push_back('%');
+            out.push_back(hex[c >> 4]);
+            out.push_back(hex[c & 0xF]);
+        }
+    }
+    return out;
+}
+
+struct GltfParts {
+    json document;
+    std::string bin;
+};
+
+// Builds the JSON and the binary buffer. `bufferUri` empty = GLB (the buffer
+// is the file's BIN chunk).
+GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const std::string& bufferUri)
+{
+    GltfParts parts;
+    json& doc = parts.document;
+    doc["asset"] = {{"version", "2.0"}, {"generator", "Regio"},
+                    {"extras", {{"colours", colours.description}, {"radiosityUnit", "W/m^2"}}}};
+    doc["scene"] = 0;
+    if (mesh.empty()) {
+        // Nothing to draw: a valid file with an empty scene.
+        doc["scenes"] = json::array({json::object({{"name", "radiosity solution"}})});
+        return parts;
+    }
+
+    const size_t n = mesh.vertexCount();
+    json bufferViews = json::array();
+    json accessors = json::array();
+    std::string& bin = parts.bin;
+
+    auto addVec3 = [&](const std::vector<glm::vec3>& values, bool withBounds, auto transform) {
+        const size_t offset = bin.size();
+        glm::vec3 lo(std::numeric_limits<float>::max());
+        glm::vec3 hi(std::numeric_limits<float>::lowest());
+        for (const glm::vec3& raw : values) {
+            const glm::vec3 v = transform(raw);
+            appendFloat(bin, v.x);
+            appendFloat(bin, v.y);
+            appendFloat(bin, v.z);
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+        bufferViews.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset},
+                               {"target", kArrayBuffer}});
+        json accessor = {{"bufferView", bufferViews.size() - 1}, {"componentType", kFloat}, {"count", values.size()},
+                         {"type", "VEC3"}};
+        if (withBounds) {
+            accessor["min"] = {lo.x, lo.y, lo.z};
+            accessor["max"] = {hi.x, hi.y, hi.z};
+        }
+        accessors.push_back(std::move(accessor));
+        return accessors.size() - 1;
+    };
+    auto same = [](const glm::vec3& v) { return v; };
+    // COLOR_0 must stay within [0,1] (unclamped tone mapping is for HDR
+    // displays, not for glTF vertex colours).
+    auto unit = [](const glm::vec3& v) { return glm::clamp(v, glm::vec3(0.0f), glm::vec3(1.0f)); };
+
+    const size_t position = addVec3(mesh.positions, true, same);
+    const size_t normal = addVec3(mesh.normals, false, same);
+    const size_t colour = addVec3(colours.linear, false, unit);
+    const size_t radiosity = addVec3(mesh.radiosity, false, same);
+
+    // Indices: 16-bit when every index fits below the primitive-restart value.
+    const bool shortIndices = n <= 0xFFFF;
+    const size_t indexOffset = bin.size();
+    for (uint32_t i : mesh.indices) {
+        if (shortIndices)
+            appendU16(bin, static_cast<uint16_t>(i));
+        else
+            appendU32(bin, i);
+    }
+    const size_t indexLength = bin.size() - indexOffset;
+    padTo4(bin, '\0');
+    bufferViews.push_back({{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indexLength},
+                           {"target", kElementArrayBuffer}});
+    accessors.push_back({{"bufferView", bufferViews.size() - 1},
+                         {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
+                         {"count", mesh.indices.size()},
+                         {"type", "SCALAR"}});
+    const size_t indices = accessors.size() - 1;
+
+    json buffer = {{"byteLength", bin.size()}};
+    if (!bufferUri.empty())
+        buffer["uri"] = bufferUri;
+    doc["buffers"] = json::array({buffer});
+    doc["bufferViews"] = std::move(bufferViews);
+    doc["accessors"] = std::move(accessors);
+    doc["materials"] = json::array({{{"name", "radiosity (unlit vertex colours)"},
+                                     {"pbrMetallicRoughness",
+                                      {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}},
+                                       {"metallicFactor", 0.0},
+                                       {"roughnessFactor", 1.0}}},
+                                     {"extensions", {{"KHR_materials_unlit", json::object()}}}}});
+    doc["extensionsUsed"] = json::array({"KHR_materials_unlit"});
+    doc["meshes"] = json::array({{{"name", "radiosity solution"},
+                                  {"primitives",
+                                   json::array({{{"attributes",
+                                                  {{"POSITION", position},
+                                                   {"NORMAL", normal},
+                                                   {"COLOR_0", colour},
+                                                   {"_RADIOSITY", radiosity}}},
+                                                 {"indices", indices},
+                                                 {"material", 0},
+                                                 {"mode", kTriangles}}})}}});
+    doc["nodes"] = json::array({{{"name", "radiosity solution"}, {"mesh", 0}}});
+    doc["scenes"] = json::array({{{"name", "radiosity solution"}, {"nodes", {0}}}});
+    return parts;
+}
+
+std::string glb(const GltfParts& parts)
+{
+    std::string jsonChunk = parts.document.dump();
+    padTo4(jsonChunk, ' ');
+    std::string binChunk = parts.bin;
+    padTo4(binChunk, '\0');
+    const bool hasBin = !binChunk.empty();
+    const size_t total = 12 + 8 + jsonChunk.size() + (hasBin ? 8 + binChunk.size() : 0);
+
+    std::string out;
+    out.reserve(total);
+    appendU32(out, kGlbMagic);
+    appendU32(out, 2);
+    appendU32(out, static_cast<uint32_t>(total));
+    appendU32(out, static_cast<uint32_t>(jsonChunk.size()));
+    appendU32(out, kGlbJsonChunk);
+    out += jsonChunk;
+    if (hasBin) {
+        appendU32(out, static_cast<uint32_t>(binChunk.size()));
+        appendU32(out, kGlbBinChunk);
+        out += binChunk;
+    }
+    return out;
+}
+
+} // namespace
+
+std::string gltfBufferPath(const std::string& gltfPath)
+{
+    std::filesystem::path p(gltfPath);
+    p.replace_extension(".bin");
+    return p.string();
+}
+
+std::optional<std::string> writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
+                                     GltfContainer container)
+{
+    if (auto problem = checkWritable(path, mesh, colours))
+        return problem;
+
+    if (container == GltfContainer::Binary) {
+        const GltfParts parts = buildGltf(mesh, colours, "");
+        const std::string bytes = glb(parts);
+        if (bytes.size() > std::numeric_limits<uint32_t>::max())
+            return "cannot write " + path + ": the model is larger than the 4 GiB a .glb file can hold";
+        return model::writeFileAtomically(path, bytes);
+    }
+
+    const std::string binPath = gltfBufferPath(path);
+    const std::string binName = std::filesystem::path(binPath).filename().string();
+    const GltfParts parts = buildGltf(mesh, colours, uriEncode(binName));
+    if (!parts.bin.empty()) {
+        if (auto error = model::writeFileAtomically(binPath, parts.bin))
+            return error;
+    }
+    return model::writeFileAtomically(path, parts.document.dump(2) + "\n");
+}
+
+} // namespace regio::solver

@@ -1,0 +1,32 @@
+#pragma once
+// What every lit-model writer (glTF, PLY, OBJ) checks and needs alike.
+#include "output/lit_mesh.h"
+#include "output/tone_map.h"
+
+#include <optional>
+#include <string>
+
+namespace regio::solver {
+
+// Refuses a malformed mesh, or colours that are not one per vertex, with a
+// message that names the file about to be written.
+inline std::optional<std::string> checkWritable(const std::string& path, const LitMesh& mesh,
+                                                const DisplayColours& colours)
+{
+    if (auto problem = checkLitMesh(mesh))
+        return "cannot write " + path + ": " + *problem;
+    if (colours.linear.size() != mesh.vertexCount())
+        return "cannot write " + path + ": the colours do not match the mesh's vertices";
+    return std::nullopt;
+}
+
+// Header comments of PLY and OBJ end at the line: keep descriptions on one.
+inline std::string oneLine(std::string s)
+{
+    for (char& c : s)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    return s;
+}
+
+} // namespace regio::solver

@@ -1,0 +1,145 @@
+#include "output/lit_mesh.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace regio::solver {
+
+namespace {
+
+bool finite(const glm::vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::vec3 toFloat(const Vec3& v)
+{
+    return glm::vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+// A unit normal in float; the double normal is unit already, but rounding to
+// float may leave it a few ulps off, and glTF validators check unit length.
+glm::vec3 unitNormal(const Vec3& n)
+{
+    const Vec3 u = glm::length(n) > 0.0 ? glm::normalize(n) : Vec3(0.0, 0.0, 1.0);
+    return glm::normalize(toFloat(u));
+}
+
+// One triangle per element, three fresh vertices each (flat output).
+struct FlatBuilder {
+    LitMesh mesh;
+
+    void reserve(size_t elements)
+    {
+        mesh.positions.reserve(3 * elements);
+        mesh.normals.reserve(3 * elements);
+        mesh.radiosity.reserve(3 * elements);
+        mesh.reflectance.reserve(3 * elements);
+        mesh.indices.reserve(3 * elements);
+        mesh.triangleFace.reserve(elements);
+    }
+
+    void add(const std::array<Vec3, 3>& corners, const Vec3& normal, const Rgb& radiosity, const Rgb& reflectance,
+             int face)
+    {
+        const glm::vec3 n = unitNormal(normal);
+        for (const Vec3& p : corners) {
+            mesh.indices.push_back(static_cast<uint32_t>(mesh.positions.size()));
+            mesh.positions.push_back(toFloat(p));
+            mesh.normals.push_back(n);
+            mesh.radiosity.push_back(toFloat(radiosity));
+            mesh.reflectance.push_back(toFloat(reflectance));
+        }
+        mesh.triangleFace.push_back(face);
+    }
+};
+
+} // namespace
+
+std::optional<std::string> checkLitMesh(const LitMesh& mesh)
+{
+    const size_t n = mesh.positions.size();
+    if (mesh.normals.size() != n || mesh.radiosity.size() != n || mesh.reflectance.size() != n)
+        return std::string("lit mesh: positions, normals, radiosity and reflectance differ in length");
+    if (mesh.indices.size() % 3 != 0)
+        return std::string("lit mesh: the index count is not a multiple of 3");
+    if (mesh.triangleFace.size() != mesh.triangleCount())
+        return std::string("lit mesh: triangleFace does not have one entry per triangle");
+    if (n > 0xFFFFFFFFu)
+        return std::string("lit mesh: too many vertices for 32-bit indices");
+    for (uint32_t i : mesh.indices) {
+        if (i >= n)
+            return "lit mesh: vertex index " + std::to_string(i) + " out of range";
+    }
+    for (int32_t f : mesh.triangleFace) {
+        if (f < 0 || static_cast<size_t>(f) >= mesh.faceIds.size())
+            return "lit mesh: face index " + std::to_string(f) + " out of range";
+    }
+    for (size_t v = 0; v < n; ++v) {
+        if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) || !finite(mesh.radiosity[v])
+            || !finite(mesh.reflectance[v]))
+            return "lit mesh: vertex " + std::to_string(v) + " has a value that is not finite";
+    }
+    return std::nullopt;
+}
+
+LitBounds litMeshBounds(const LitMesh& mesh)
+{
+    LitBounds b;
+    for (const glm::vec3& p : mesh.positions) {
+        if (b.empty) {
+            b.min = b.max = p;
+            b.empty = false;
+        } else {
+            b.min = glm::min(b.min, p);
+            b.max = glm::max(b.max, p);
+        }
+    }
+    return b;
+}
+
+LitMesh litMeshFromSolution(const PreparedScene& scene, const std::vector<Rgb>& elementRadiosity)
+{
+    if (elementRadiosity.size() != scene.elements.size())
+        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(elementRadiosity.size())
+                                    + " radiosity values for " + std::to_string(scene.elements.size())
+                                    + " elements");
+    FlatBuilder b;
+    b.reserve(scene.elements.size());
+    for (const InputFace& f : scene.faces)
+        b.mesh.faceIds.push_back(f.id);
+    for (size_t e = 0; e < scene.elements.size(); ++e) {
+        const Element& el = scene.elements[e];
+        const Properties& p = scene.properties[static_cast<size_t>(el.properties)];
+        const std::array<Vec3, 3> corners{scene.vertices[static_cast<size_t>(el.vertices[0])],
+                                          scene.vertices[static_cast<size_t>(el.vertices[1])],
+                                          scene.vertices[static_cast<size_t>(el.vertices[2])]};
+        b.add(corners, el.normal, elementRadiosity[e], p.reflectance, p.face);
+    }
+    return std::move(b.mesh);
+}
+
+LitMesh litMeshFromSolution(const SolutionSnapshot& snapshot)
+{
+    if (!snapshot.mesh)
+        return {};
+    const SolutionMesh& m = *snapshot.mesh;
+    if (snapshot.radiosity.size() != m.triangles.size())
+        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(snapshot.radiosity.size())
+                                    + " radiosity values for " + std::to_string(m.triangles.size())
+                                    + " elements");
+    FlatBuilder b;
+    b.reserve(m.triangles.size());
+    b.mesh.faceIds = m.faceIds;
+    for (size_t e = 0; e < m.triangles.size(); ++e) {
+        const auto& t = m.triangles[e];
+        const std::array<Vec3, 3> corners{m.vertices[static_cast<size_t>(t[0])], m.vertices[static_cast<size_t>(t[1])],
+                                          m.vertices[static_cast<size_t>(t[2])]};
+        b.add(corners, m.normals[e], snapshot.radiosity[e], m.reflectance[e], m.elementFace[e]);
+    }
+    return std::move(b.mesh);
+}
+
+} // namespace regio::solver

@@ -1,0 +1,16 @@
+#pragma once
+// PNG output of software images through stb_image_write (Debian's libstb-dev),
+// written atomically; errors name the path.
+#include "output/software_render.h"
+
+#include <optional>
+#include <string>
+
+namespace regio::solver {
+
+// The PNG file's bytes (8-bit RGB, no interlace); empty for an empty image.
+std::string encodePng(const Image& image);
+
+std::optional<std::string> writePng(const std::string& path, const Image& image);
+
+} // namespace regio::solver

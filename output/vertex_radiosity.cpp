@@ -1,0 +1,370 @@
+#include "output/vertex_radiosity.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace regio::solver {
+
+namespace {
+
+glm::vec3 toFloat(const Vec3& v)
+{
+    return glm::vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+bool near(const Vec3& a, const Vec3& b, double tolerance)
+{
+    return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance && std::abs(a.z - b.z) <= tolerance;
+}
+
+// Faces whose pieces may share vertex values: same plane, same side, same
+// material. Properties carry the material's values, not its id, so two
+// materials with equal values count as one (they look the same anyway).
+struct GroupKey {
+    Plane plane;
+    Rgb reflectance;
+    Rgb emission;
+
+    bool matches(const Properties& p) const
+    {
+        return glm::dot(plane.normal, p.plane.normal) > 1.0 - 1e-9 && std::abs(plane.d - p.plane.d) <= 1e-7
+            && near(reflectance, p.reflectance, 1e-12) && near(emission, p.emission, 1e-12);
+    }
+};
+
+// Which group each Properties belongs to, and the elements of every group.
+struct Grouping {
+    std::vector<GroupKey> keys;
+    std::vector<std::vector<int>> elements;
+};
+
+Grouping groupElements(const PreparedScene& scene)
+{
+    Grouping g;
+    std::vector<int> groupOfProperties(scene.properties.size(), -1);
+    for (size_t i = 0; i < scene.properties.size(); ++i) {
+        const Properties& p = scene.properties[i];
+        for (size_t k = 0; k < g.keys.size() && groupOfProperties[i] < 0; ++k) {
+            if (g.keys[k].matches(p))
+                groupOfProperties[i] = static_cast<int>(k);
+        }
+        if (groupOfProperties[i] < 0) {
+            groupOfProperties[i] = static_cast<int>(g.keys.size());
+            g.keys.push_back({p.plane, p.reflectance, p.emission});
+        }
+    }
+    g.elements.resize(g.keys.size());
+    for (size_t e = 0; e < scene.elements.size(); ++e) {
+        const int group = groupOfProperties[static_cast<size_t>(scene.elements[e].properties)];
+        g.elements[static_cast<size_t>(group)].push_back(static_cast<int>(e));
+    }
+    return g;
+}
+
+struct CellHash {
+    size_t operator()(const std::array<int64_t, 3>& c) const
+    {
+        uint64_t h = 1469598103934665603ull;
+        for (int64_t v : c)
+            h = (h ^ static_cast<uint64_t>(v)) * 1099511628211ull;
+        return static_cast<size_t>(h);
+    }
+};
+
+// A uniform grid of point ids; lookups visit the 3 x 3 x 3 cells around a
+// point, so everything within one cell size of it is found.
+class PointGrid {
+public:
+    explicit PointGrid(double cell) : m_cell(cell) {}
+
+    std::array<int64_t, 3> cellOf(const Vec3& p) const
+    {
+        return {static_cast<int64_t>(std::floor(p.x / m_cell)), static_cast<int64_t>(std::floor(p.y / m_cell)),
+                static_cast<int64_t>(std::floor(p.z / m_cell))};
+    }
+    void insert(const Vec3& p, int id) { m_cells[cellOf(p)].push_back(id); }
+
+    template <typename F>
+    void forNear(const Vec3& p, F&& visit) const
+    {
+        const auto c = cellOf(p);
+        for (int64_t dx = -1; dx <= 1; ++dx)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dz = -1; dz <= 1; ++dz) {
+                    const auto it = m_cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it != m_cells.end())
+                        for (int id : it->second)
+                            visit(id);
+                }
+    }
+
+private:
+    double m_cell;
+    std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> m_cells;
+};
+
+uint64_t edgeKey(int a, int b)
+{
+    return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
+}
+
+// Triangulates a convex polygon whose sides may hold collinear points (the
+// T-vertices) by clipping ears, never a degenerate one: each time the ear of
+// best shape (area over the squared side lengths) among those with a real
+// area that leave a remainder with an area. CCW order is kept. Returns
+// triangles as triples of polygon entries.
+void triangulateConvex(std::vector<int> polygon, const std::vector<Vec3>& positions, const Vec3& normal,
+                       std::vector<std::array<int, 3>>& out)
+{
+    while (polygon.size() > 3) {
+        const size_t n = polygon.size();
+        // An ear may only go if what stays has an area too: cutting the ear
+        // opposite a side full of collinear points would leave them flat.
+        double twiceTotal = 0.0;
+        const Vec3& origin = positions[static_cast<size_t>(polygon[0])];
+        for (size_t i = 1; i + 1 < n; ++i)
+            twiceTotal += glm::dot(glm::cross(positions[static_cast<size_t>(polygon[i])] - origin,
+                                              positions[static_cast<size_t>(polygon[i + 1])] - origin),
+                                   normal);
+        int best = -1;
+        double bestQuality = 0.0;
+        for (size_t i = 0; i < n; ++i) {
+            const Vec3& a = positions[static_cast<size_t>(polygon[(i + n - 1) % n])];
+            const Vec3& b = positions[static_cast<size_t>(polygon[i])];
+            const Vec3& c = positions[static_cast<size_t>(polygon[(i + 1) % n])];
+            const double twiceArea = glm::dot(glm::cross(b - a, c - a), normal);
+            const double sides = glm::dot(b - a, b - a) + glm::dot(c - b, c - b) + glm::dot(a - c, a - c);
+            const double quality = twiceArea / sides;
+            if (quality > 1e-9 && twiceTotal - twiceArea > 1e-9 * twiceTotal && quality > bestQuality) {
+                bestQuality = quality;
+                best = static_cast<int>(i);
+            }
+        }
+        if (best < 0)
+            break; // numerically flat remainder: fan it below
+        const size_t i = static_cast<size_t>(best);
+        out.push_back({polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]});
+        polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    for (size_t i = 1; i + 1 < polygon.size(); ++i)
+        out.push_back({polygon[0], polygon[i], polygon[i + 1]});
+}
+
+// One group: weld, find T-vertices, average, re-triangulate, emit.
+void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, const GroupKey& key,
+                 const std::vector<int>& elements, const SmoothingOptions& options, LitMesh& mesh)
+{
+    // Weld the corners.
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> corners(elements.size());
+    PointGrid weld(std::max(options.weldTolerance, 1e-12));
+    double edgeLengthSum = 0.0;
+    for (size_t k = 0; k < elements.size(); ++k) {
+        const Element& el = scene.elements[static_cast<size_t>(elements[k])];
+        for (int c = 0; c < 3; ++c) {
+            const Vec3& p = scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>(c)])];
+            int found = -1;
+            weld.forNear(p, [&](int id) {
+                if (found < 0 && near(positions[static_cast<size_t>(id)], p, options.weldTolerance))
+                    found = id;
+            });
+            if (found < 0) {
+                found = static_cast<int>(positions.size());
+                positions.push_back(p);
+                weld.insert(p, found);
+            }
+            corners[k][static_cast<size_t>(c)] = found;
+        }
+        for (int c = 0; c < 3; ++c)
+            edgeLengthSum += glm::length(scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>((c + 1) % 3)])]
+                                         - scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>(c)])]);
+    }
+
+    // Directed edges; an edge whose reverse exists is conforming and holds
+    // no T-vertex. Only the others are searched.
+    std::unordered_map<uint64_t, int> edges;
+    for (const auto& t : corners)
+        for (size_t c = 0; c < 3; ++c)
+            ++edges[edgeKey(t[c], t[(c + 1) % 3])];
+
+    const double cell = std::max(edgeLengthSum / (3.0 * static_cast<double>(elements.size())), 1e-6);
+    PointGrid grid(cell);
+    for (size_t v = 0; v < positions.size(); ++v)
+        grid.insert(positions[v], static_cast<int>(v));
+
+    // Each element's outline: corners and, on each side, the T-vertices in
+    // order along it.
+    std::vector<std::vector<int>> outlines(elements.size());
+    std::vector<int> candidates;
+    std::vector<std::pair<double, int>> onEdge;
+    for (size_t k = 0; k < elements.size(); ++k) {
+        for (size_t c = 0; c < 3; ++c) {
+            const int ia = corners[k][c];
+            const int ib = corners[k][(c + 1) % 3];
+            outlines[k].push_back(ia);
+            if (edges.count(edgeKey(ib, ia)) != 0)
+                continue;
+            const Vec3 a = positions[static_cast<size_t>(ia)];
+            const Vec3 d = positions[static_cast<size_t>(ib)] - a;
+            const double length2 = glm::dot(d, d);
+            if (length2 <= 0.0)
+                continue;
+            const double length = std::sqrt(length2);
+            const int steps = static_cast<int>(std::ceil(length / cell));
+            candidates.clear();
+            for (int s = 0; s <= steps; ++s)
+                grid.forNear(a + d * (static_cast<double>(s) / steps), [&](int id) { candidates.push_back(id); });
+            std::sort(candidates.begin(), candidates.end());
+            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+            onEdge.clear();
+            const double tMargin = options.edgeTolerance / length;
+            for (int v : candidates) {
+                if (v == ia || v == ib)
+                    continue;
+                const Vec3 p = positions[static_cast<size_t>(v)];
+                const double t = glm::dot(p - a, d) / length2;
+                if (t <= tMargin || t >= 1.0 - tMargin)
+                    continue;
+                if (glm::length(p - (a + d * t)) <= options.edgeTolerance)
+                    onEdge.emplace_back(t, v);
+            }
+            std::sort(onEdge.begin(), onEdge.end());
+            for (const auto& [t, v] : onEdge)
+                outlines[k].push_back(v);
+        }
+    }
+
+    // Area-weighted average of the elements touching each vertex (§6).
+    std::vector<Rgb> sum(positions.size(), Rgb(0.0));
+    std::vector<double> weight(positions.size(), 0.0);
+    std::vector<Rgb> plainSum(positions.size(), Rgb(0.0));
+    std::vector<int> count(positions.size(), 0);
+    for (size_t k = 0; k < elements.size(); ++k) {
+        const size_t e = static_cast<size_t>(elements[k]);
+        const double area = scene.elements[e].area;
+        for (int v : outlines[k]) {
+            sum[static_cast<size_t>(v)] += radiosity[e] * area;
+            weight[static_cast<size_t>(v)] += area;
+            plainSum[static_cast<size_t>(v)] += radiosity[e];
+            ++count[static_cast<size_t>(v)];
+        }
+    }
+    std::vector<Rgb> value(positions.size(), Rgb(0.0));
+    for (size_t v = 0; v < positions.size(); ++v) {
+        if (weight[v] > 0.0)
+            value[v] = sum[v] / weight[v];
+        else if (count[v] > 0) // only zero-area elements touch it
+            value[v] = plainSum[v] / static_cast<double>(count[v]);
+    }
+
+    // The output triangles, free of T-vertices.
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<int> triangleFace;
+    for (size_t k = 0; k < elements.size(); ++k) {
+        if (outlines[k].size() == 3)
+            triangles.push_back({outlines[k][0], outlines[k][1], outlines[k][2]});
+        else
+            triangulateConvex(outlines[k], positions, key.plane.normal, triangles);
+        const int face = scene.properties[static_cast<size_t>(scene.elements[static_cast<size_t>(elements[k])].properties)].face;
+        triangleFace.resize(triangles.size(), face);
+    }
+
+    // Boundary vertices (on an edge used by one triangle) and neighbours.
+    std::unordered_map<uint64_t, int> undirected;
+    for (const auto& t : triangles)
+        for (size_t c = 0; c < 3; ++c) {
+            const int a = t[c], b = t[(c + 1) % 3];
+            ++undirected[edgeKey(std::min(a, b), std::max(a, b))];
+        }
+    std::vector<char> boundary(positions.size(), 0);
+    std::vector<std::vector<int>> neighbours(positions.size());
+    for (const auto& [edge, uses] : undirected) {
+        const int a = static_cast<int>(edge >> 32), b = static_cast<int>(edge & 0xFFFFFFFFu);
+        neighbours[static_cast<size_t>(a)].push_back(b);
+        neighbours[static_cast<size_t>(b)].push_back(a);
+        if (uses == 1)
+            boundary[static_cast<size_t>(a)] = boundary[static_cast<size_t>(b)] = 1;
+    }
+
+    if (options.extrapolateBoundary) {
+        const std::vector<Rgb> average = value;
+        for (size_t v = 0; v < positions.size(); ++v) {
+            if (!boundary[v])
+                continue;
+            Rgb inner(0.0);
+            int n = 0;
+            for (int w : neighbours[v]) {
+                if (!boundary[static_cast<size_t>(w)]) {
+                    inner += average[static_cast<size_t>(w)];
+                    ++n;
+                }
+            }
+            if (n > 0)
+                value[v] = glm::max(2.0 * average[v] - inner / static_cast<double>(n), Rgb(0.0));
+        }
+    }
+
+    for (int pass = 0; pass < options.neighbourPasses; ++pass) {
+        const std::vector<Rgb> previous = value;
+        for (size_t v = 0; v < positions.size(); ++v) {
+            if (neighbours[v].empty())
+                continue;
+            Rgb mean(0.0);
+            for (int w : neighbours[v])
+                mean += previous[static_cast<size_t>(w)];
+            mean /= static_cast<double>(neighbours[v].size());
+            value[v] = previous[v] + options.neighbourWeight * (mean - previous[v]);
+        }
+    }
+
+    // Emit the group: its vertices once each, then its triangles.
+    const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
+    const glm::vec3 normal = glm::normalize(toFloat(glm::normalize(key.plane.normal)));
+    for (size_t v = 0; v < positions.size(); ++v) {
+        mesh.positions.push_back(toFloat(positions[v]));
+        mesh.normals.push_back(normal);
+        mesh.radiosity.push_back(toFloat(value[v]));
+        mesh.reflectance.push_back(toFloat(key.reflectance));
+    }
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        for (int v : triangles[t])
+            mesh.indices.push_back(base + static_cast<uint32_t>(v));
+        mesh.triangleFace.push_back(triangleFace[t]);
+    }
+}
+
+} // namespace
+
+LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRadiosity,
+                      const SmoothingOptions& options)
+{
+    if (elementRadiosity.size() != scene.elements.size())
+        throw std::invalid_argument("smoothLitMesh: " + std::to_string(elementRadiosity.size())
+                                    + " radiosity values for " + std::to_string(scene.elements.size())
+                                    + " elements");
+    LitMesh mesh;
+    for (const InputFace& f : scene.faces)
+        mesh.faceIds.push_back(f.id);
+    const Grouping groups = groupElements(scene);
+    for (size_t g = 0; g < groups.keys.size(); ++g) {
+        if (!groups.elements[g].empty())
+            smoothGroup(scene, elementRadiosity, groups.keys[g], groups.elements[g], options, mesh);
+    }
+    return mesh;
+}
+
+LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth)
+{
+    if (smooth)
+        return smoothLitMesh(scene, elementRadiosity);
+    return litMeshFromSolution(scene, std::vector<Rgb>(elementRadiosity.begin(), elementRadiosity.end()));
+}
+
+} // namespace regio::solver

@@ -1,0 +1,55 @@
+#pragma once
+// A convex piece of an input face on its way through preparation: clipped by
+// separating planes (§5.2) and split by BSP planes (§5.3) before it becomes a
+// fragment. `face` indexes PreparedScene::faces / properties.
+#include "model/geometry/geometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <vector>
+
+namespace regio::solver {
+
+struct FacePolygon {
+    std::vector<model::Vec3> loop; // convex, counter-clockwise seen from the face normal
+    int face = -1;
+};
+
+// Removes repeated vertices and vertices on a straight line between their
+// neighbours (within eps), which plane splits leave behind. Such points would
+// otherwise become zero-area triangles downstream. The result may have fewer
+// than three vertices when the loop was degenerate.
+inline std::vector<model::Vec3> cleanConvexLoop(const std::vector<model::Vec3>& loop,
+                                                double eps = model::kDistanceEpsilon)
+{
+    std::vector<model::Vec3> out;
+    out.reserve(loop.size());
+    for (const model::Vec3& p : loop)
+        if (out.empty() || glm::length(p - out.back()) > eps)
+            out.push_back(p);
+    while (out.size() > 1 && glm::length(out.front() - out.back()) <= eps)
+        out.pop_back();
+    // Drop straight corners until none is left (each removal can expose another).
+    bool removed = true;
+    while (removed && out.size() >= 3) {
+        removed = false;
+        for (size_t i = 0; i < out.size() && out.size() >= 3; ++i) {
+            const model::Vec3& a = out[(i + out.size() - 1) % out.size()];
+            const model::Vec3& b = out[i];
+            const model::Vec3& c = out[(i + 1) % out.size()];
+            double base = glm::length(c - a);
+            // Distance of b from the line a-c.
+            double off = base > 0.0 ? glm::length(glm::cross(b - a, c - a)) / base : glm::length(b - a);
+            if (off <= eps) {
+                out.erase(out.begin() + std::ptrdiff_t(i));
+                removed = true;
+                --i;
+            }
+        }
+    }
+    if (out.size() < 3)
+        out.clear();
+    return out;
+}
+
+} // namespace regio::solver

@@ -1,0 +1,152 @@
+#include "solver/prepare/meshing.h"
+
+#include "solver/prepare/strip_triangulation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+
+namespace regio::solver {
+
+namespace {
+
+// Shares the division points of patch edges between the two patches of a
+// face that meet along them.
+class EdgePoints {
+public:
+    EdgePoints(std::vector<Vec3>& vertices, int divisions) : m_vertices(vertices), m_k(divisions) {}
+
+    void clear() { m_edges.clear(); }
+
+    // The t-th of the k-1 inner division points of edge p -> q (t in 1..k-1).
+    int at(int p, int q, int t)
+    {
+        const int lo = std::min(p, q), hi = std::max(p, q);
+        const std::uint64_t key = (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
+        auto [it, inserted] = m_edges.try_emplace(key, int(m_vertices.size()));
+        if (inserted) {
+            // Computed once from the lower index, so both users see the same points.
+            const Vec3 a = m_vertices[size_t(lo)], b = m_vertices[size_t(hi)];
+            for (int s = 1; s < m_k; ++s)
+                m_vertices.push_back(a + (b - a) * (double(s) / double(m_k)));
+        }
+        return it->second + (p < q ? t - 1 : m_k - t - 1);
+    }
+
+private:
+    std::vector<Vec3>& m_vertices;
+    int m_k;
+    std::unordered_map<std::uint64_t, int> m_edges;
+};
+
+double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+void addElement(PreparedScene& scene, const Patch& patch, int patchIndex, std::array<int, 3> v)
+{
+    const Vec3 &a = scene.vertices[size_t(v[0])], &b = scene.vertices[size_t(v[1])],
+               &c = scene.vertices[size_t(v[2])];
+    Element e;
+    e.vertices = v;
+    e.patch = patchIndex;
+    e.properties = patch.properties;
+    e.node = -1; // set by buildPieces
+    e.area = triangleArea(a, b, c);
+    e.centroid = (a + b + c) / 3.0;
+    e.normal = scene.properties[size_t(patch.properties)].plane.normal;
+    scene.faces[size_t(patch.properties)].elements.push_back(int(scene.elements.size()));
+    scene.elements.push_back(e);
+}
+
+// The k x k barycentric grid of a patch: point (i, j) = A + i/k (B - A) + j/k (C - A).
+void splitPatch(PreparedScene& scene, int patchIndex, int k, EdgePoints& edges)
+{
+    const Patch patch = scene.patches[size_t(patchIndex)];
+    const int A = patch.vertices[0], B = patch.vertices[1], C = patch.vertices[2];
+    if (k == 1) {
+        addElement(scene, patch, patchIndex, patch.vertices);
+        return;
+    }
+    std::vector<int> grid(size_t((k + 1) * (k + 1)), -1);
+    auto slot = [&](int i, int j) -> int& { return grid[size_t(j * (k + 1) + i)]; };
+    slot(0, 0) = A;
+    slot(k, 0) = B;
+    slot(0, k) = C;
+    for (int t = 1; t < k; ++t) {
+        slot(t, 0) = edges.at(A, B, t);
+        slot(0, t) = edges.at(A, C, t);
+        slot(k - t, t) = edges.at(B, C, t);
+    }
+    const Vec3 pa = scene.vertices[size_t(A)], pb = scene.vertices[size_t(B)], pc = scene.vertices[size_t(C)];
+    for (int j = 1; j < k; ++j)
+        for (int i = 1; i + j < k; ++i) {
+            slot(i, j) = int(scene.vertices.size());
+            scene.vertices.push_back(pa + (pb - pa) * (double(i) / k) + (pc - pa) * (double(j) / k));
+        }
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i + j < k; ++i) {
+            addElement(scene, patch, patchIndex, {slot(i, j), slot(i + 1, j), slot(i, j + 1)});
+            if (i + j <= k - 2)
+                addElement(scene, patch, patchIndex, {slot(i + 1, j), slot(i + 1, j + 1), slot(i, j + 1)});
+        }
+}
+
+} // namespace
+
+int elementGridDivisions(int elementsPerPatch)
+{
+    return std::max(1, int(std::lround(std::sqrt(double(std::max(elementsPerPatch, 1))))));
+}
+
+void meshFaces(PreparedScene& scene)
+{
+    scene.vertices.clear();
+    scene.patches.clear();
+    scene.elements.clear();
+    for (InputFace& face : scene.faces)
+        face.elements.clear();
+    const int k = elementGridDivisions(scene.elementsPerPatch);
+    EdgePoints edges(scene.vertices, k);
+
+    // The strip method applied to the whole input face (§5.4): patches and
+    // elements do not depend on the regions or on the BSP splits, which only
+    // decide how the elements are painted (solver/prepare/pieces.h). The division
+    // points of patch edges are shared across the whole face, so its element
+    // mesh is conforming.
+    for (size_t f = 0; f < scene.faces.size(); ++f) {
+        InputFace& face = scene.faces[f];
+        face.firstPatch = int(scene.patches.size());
+        face.patchCount = 0;
+        if (face.polygon.size() < 3)
+            continue;
+        const Properties& props = scene.properties[f];
+        StripMesh mesh = stripTriangulate(face.polygon, props.plane.normal, scene.patchSize);
+
+        const int base = int(scene.vertices.size());
+        scene.vertices.insert(scene.vertices.end(), mesh.points.begin(), mesh.points.end());
+        face.patchCount = int(mesh.triangles.size());
+        edges.clear();
+        for (const Triangle& t : mesh.triangles) {
+            Patch patch;
+            patch.vertices = {base + t[0], base + t[1], base + t[2]};
+            patch.properties = int(f);
+            const Vec3 &a = scene.vertices[size_t(patch.vertices[0])], &b = scene.vertices[size_t(patch.vertices[1])],
+                       &c = scene.vertices[size_t(patch.vertices[2])];
+            patch.area = triangleArea(a, b, c);
+            patch.centroid = (a + b + c) / 3.0;
+            patch.firstElement = int(scene.elements.size());
+            const int patchIndex = int(scene.patches.size());
+            scene.patches.push_back(patch);
+            splitPatch(scene, patchIndex, k, edges);
+            scene.patches.back().elementCount = int(scene.elements.size()) - patch.firstElement;
+        }
+    }
+}
+
+} // namespace regio::solver

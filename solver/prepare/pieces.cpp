@@ -1,0 +1,425 @@
+#include "solver/prepare/pieces.h"
+
+#include "solver/prepare/face_polygon.h"
+#include "solver/prepare/regional_tree.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace regio::solver {
+
+namespace {
+
+// A convex part of an element on its way down the trees: a loop of indices
+// into PreparedScene::pieceVertices.
+struct Work {
+    std::vector<int> loop;
+    int element = -1;
+    bool centred = false; // has points inside its edges: triangulated around its centroid
+};
+
+
+
+struct CutKey {
+    int lo = 0, hi = 0, plane = 0;
+    bool operator==(const CutKey&) const = default;
+};
+
+struct CutKeyHash {
+    size_t operator()(const CutKey& k) const
+    {
+        std::uint64_t h = std::uint64_t(std::uint32_t(k.lo)) * 0x9E3779B97F4A7C15ull;
+        h ^= (std::uint64_t(std::uint32_t(k.hi)) + 0x7F4A7C15ull + (h << 6) + (h >> 2)) * 0xC2B2AE3D27D4EB4Full;
+        h ^= (std::uint64_t(std::uint32_t(k.plane)) + (h << 6) + (h >> 2)) * 0x165667B19E3779F9ull;
+        return size_t(h ^ (h >> 29));
+    }
+};
+
+// The builders' sliver rule (bsp_tree.cpp keepPiece, regional_tree.cpp
+// assign): a side of a split face is kept only if something of area is left.
+bool keepSide(std::vector<Vec3>& loop)
+{
+    loop = cleanConvexLoop(loop);
+    return loop.size() >= 3 && model::polygonArea(loop) > model::kAreaEpsilon;
+}
+
+class PieceBuilder {
+public:
+    PieceBuilder(PreparedScene& scene, std::span<const std::vector<int>> elementLoops)
+        : m_scene(scene)
+        , m_elementLoops(elementLoops)
+        , m_perNode(scene.nodes.size())
+        , m_faceCuts(scene.faces.size())
+    {
+    }
+
+    void pushFace(int face)
+    {
+        const InputFace& input = m_scene.faces[size_t(face)];
+        if (input.polygon.size() < 3 || input.elements.empty())
+            return;
+        std::vector<Work> pieces;
+        pieces.reserve(input.elements.size());
+        for (int e : input.elements) {
+            if (size_t(e) < m_elementLoops.size() && m_elementLoops[size_t(e)].size() > 3) {
+                pieces.push_back({m_elementLoops[size_t(e)], e, true});
+                continue;
+            }
+            const Element& element = m_scene.elements[size_t(e)];
+            pieces.push_back({{element.vertices[0], element.vertices[1], element.vertices[2]}, e});
+        }
+        m_face = face;
+        if (m_scene.regionalRoot < 0) {
+            lose(pieces);
+            return;
+        }
+        pushRegional(m_scene.regionalRoot, input.polygon, std::move(pieces));
+    }
+
+    void finish();
+
+private:
+    void collectOnEdge(int face, int a, int b, std::vector<int>& into) const;
+    void insertEdgePoints(Work& piece);
+
+    const Vec3& vertex(int v) const { return m_scene.pieceVertices[size_t(v)]; }
+
+    // One key per distinct plane (bit for bit): BSP nodes in different
+    // subtrees that carry the same face's plane, or a face plane equal to a
+    // separating plane, cut an edge at one shared point.
+    int planeKey(const Plane& plane)
+    {
+        std::array<std::uint64_t, 4> bits{};
+        std::memcpy(&bits[0], &plane.normal.x, sizeof(double));
+        std::memcpy(&bits[1], &plane.normal.y, sizeof(double));
+        std::memcpy(&bits[2], &plane.normal.z, sizeof(double));
+        std::memcpy(&bits[3], &plane.d, sizeof(double));
+        return m_planeKeys.try_emplace(bits, int(m_planeKeys.size())).first->second;
+    }
+
+    // The point where edge a-b crosses `plane`, computed from the lower vertex
+    // index and made once per (edge, plane): bit-identical for every piece
+    // that has this edge, on either side of the cut.
+    int cutVertex(int a, int b, const Plane& plane, int planeKey)
+    {
+        const int lo = std::min(a, b), hi = std::max(a, b);
+        auto [it, inserted] = m_cuts.try_emplace(CutKey{lo, hi, planeKey}, -1);
+        if (!inserted)
+            return it->second;
+        const Vec3 p = vertex(lo), q = vertex(hi);
+        const double sp = plane.signedDistance(p), sq = plane.signedDistance(q);
+        const Vec3 x = p + (q - p) * (sp / (sp - sq));
+        // The same point may come from another plane through the same line
+        // of the face (one surface seen as a separating plane in one cell and
+        // as a face plane in another), or from the crossing of two cut lines
+        // reached in the other order in another cell: one point, not two a
+        // rounding apart.
+        for (int other : m_faceCuts[size_t(m_face)])
+            if (glm::length(vertex(other) - x) <= kMergeDistance)
+                return it->second = other;
+        it->second = int(m_scene.pieceVertices.size());
+        m_scene.pieceVertices.push_back(x);
+        m_faceCuts[size_t(m_face)].push_back(it->second);
+        return it->second;
+    }
+
+    // model::splitPolygon on index loops: vertices within eps go to both sides.
+    void split(const Work& piece, const Plane& plane, int planeKey, std::vector<Work>& front,
+               std::vector<Work>& back)
+    {
+        const size_t n = piece.loop.size();
+        m_distance.resize(n);
+        bool anyFront = false, anyBack = false;
+        double sum = 0.0;
+        for (size_t i = 0; i < n; ++i) {
+            m_distance[i] = plane.signedDistance(vertex(piece.loop[i]));
+            anyFront |= m_distance[i] > kEps;
+            anyBack |= m_distance[i] < -kEps;
+            sum += m_distance[i];
+        }
+        if (!anyFront || !anyBack) {
+            // Wholly on one side, or (a speck within eps of the plane) on the
+            // side its vertices lean to.
+            (anyFront || (!anyBack && sum >= 0.0) ? front : back).push_back(piece);
+            return;
+        }
+        // Centred stays: a side may keep T-vertices of the element loop.
+        Work f{{}, piece.element, piece.centred}, b{{}, piece.element, piece.centred};
+        for (size_t i = 0; i < n; ++i) {
+            const size_t j = (i + 1) % n;
+            const double sa = m_distance[i], sb = m_distance[j];
+            if (sa >= -kEps)
+                f.loop.push_back(piece.loop[i]);
+            if (sa <= kEps)
+                b.loop.push_back(piece.loop[i]);
+            if ((sa > kEps && sb < -kEps) || (sa < -kEps && sb > kEps)) {
+                const int cut = cutVertex(piece.loop[i], piece.loop[j], plane, planeKey);
+                f.loop.push_back(cut);
+                b.loop.push_back(cut);
+            }
+        }
+        // A convex polygon with vertices strictly on both sides keeps at least
+        // three on each.
+        front.push_back(std::move(f));
+        back.push_back(std::move(b));
+    }
+
+    // The face polygon spans `plane`: cut it as the builders did and the
+    // element pieces with it; if neither side is kept, the pieces are lost.
+    template <class Recurse>
+    void spanning(const std::vector<Vec3>& face, std::vector<Work> pieces, const Plane& plane, int planeKey,
+                  int frontChild, int backChild, Recurse&& recurse)
+    {
+        std::vector<Vec3> frontLoop, backLoop;
+        model::splitPolygon(face, plane, frontLoop, backLoop, kEps);
+        const bool keepFront = keepSide(frontLoop);
+        const bool keepBack = keepSide(backLoop);
+        if (keepFront && keepBack) {
+            std::vector<Work> front, back;
+            for (const Work& piece : pieces)
+                split(piece, plane, planeKey, front, back);
+            pieces.clear();
+            recurse(backChild, std::move(backLoop), std::move(back));
+            recurse(frontChild, std::move(frontLoop), std::move(front));
+        } else if (keepFront) {
+            // The builder dropped the back sliver: the face lives on in front
+            // only, and so do its elements (uncut).
+            recurse(frontChild, std::move(frontLoop), std::move(pieces));
+        } else if (keepBack) {
+            recurse(backChild, std::move(backLoop), std::move(pieces));
+        } else {
+            lose(pieces);
+        }
+    }
+
+    // regional_tree.cpp assign(): classify, a polygon on the plane goes to
+    // the side its normal faces, a spanning one is clipped.
+    void pushRegional(int index, std::vector<Vec3> face, std::vector<Work> pieces)
+    {
+        const RegionalNode& node = m_scene.regionalNodes[size_t(index)];
+        if (node.isLeaf()) {
+            pushBsp(m_scene.regions[size_t(node.region)].bspRoot, std::move(face), std::move(pieces));
+            return;
+        }
+        const Plane plane = separatingPlane(node.axis, node.position);
+        switch (model::classifyPolygon(face, plane)) {
+        case model::Side::Front: pushRegional(node.front, std::move(face), std::move(pieces)); return;
+        case model::Side::Back: pushRegional(node.back, std::move(face), std::move(pieces)); return;
+        case model::Side::On: {
+            const int side = model::polygonNormal(face)[node.axis] >= 0.0 ? node.front : node.back;
+            pushRegional(side, std::move(face), std::move(pieces));
+            return;
+        }
+        case model::Side::Spanning:
+            spanning(face, std::move(pieces), plane, planeKey(plane), node.front, node.back,
+                     [&](int child, std::vector<Vec3> f, std::vector<Work> p) {
+                         pushRegional(child, std::move(f), std::move(p));
+                     });
+            return;
+        }
+    }
+
+    bool nodeHoldsFace(const BspNode& node) const
+    {
+        for (int i = 0; i < node.fragmentCount; ++i)
+            if (m_scene.fragments[size_t(node.firstFragment + i)].properties == m_face)
+                return true;
+        return false;
+    }
+
+    // bsp_tree.cpp Builder::build(): the face stops at the node holding its
+    // fragments (its plane), otherwise goes front, back or is split.
+    void pushBsp(int index, std::vector<Vec3> face, std::vector<Work> pieces)
+    {
+        if (index < 0) {
+            lose(pieces);
+            return;
+        }
+        const BspNode& node = m_scene.nodes[size_t(index)];
+        const model::Side side = nodeHoldsFace(node) ? model::Side::On : model::classifyPolygon(face, node.plane, kEps);
+        switch (side) {
+        case model::Side::On: {
+            auto& into = m_perNode[size_t(index)];
+            for (Work& p : pieces)
+                into.push_back(std::move(p));
+            return;
+        }
+        case model::Side::Front: pushBsp(node.front, std::move(face), std::move(pieces)); return;
+        case model::Side::Back: pushBsp(node.back, std::move(face), std::move(pieces)); return;
+        case model::Side::Spanning:
+            spanning(face, std::move(pieces), node.plane, planeKey(node.plane), node.front, node.back,
+                     [&](int child, std::vector<Vec3> f, std::vector<Work> p) {
+                         pushBsp(child, std::move(f), std::move(p));
+                     });
+            return;
+        }
+    }
+
+    void lose(const std::vector<Work>& pieces)
+    {
+        for (const Work& p : pieces) {
+            ++m_scene.stats.lostPieces;
+            std::vector<Vec3> loop;
+            for (int v : p.loop)
+                loop.push_back(vertex(v));
+            m_scene.stats.lostPieceArea += model::polygonArea(loop);
+        }
+    }
+
+    static constexpr double kEps = model::kDistanceEpsilon; // the builders' epsilon
+    static constexpr double kMergeDistance = 1e-9;          // metres; far below any mesh size
+
+    PreparedScene& m_scene;
+    std::span<const std::vector<int>> m_elementLoops;
+    std::vector<std::vector<Work>> m_perNode;
+    std::unordered_map<CutKey, int, CutKeyHash> m_cuts;
+    std::vector<std::vector<int>> m_faceCuts; // per input face: its cut points
+    struct BitsHash {
+        size_t operator()(const std::array<std::uint64_t, 4>& b) const
+        {
+            std::uint64_t h = 0;
+            for (std::uint64_t x : b)
+                h = (h ^ x) * 0x100000001B3ull + (h >> 31);
+            return size_t(h);
+        }
+    };
+    std::unordered_map<std::array<std::uint64_t, 4>, int, BitsHash> m_planeKeys;
+    std::vector<double> m_distance;
+    int m_face = -1;
+};
+
+// Cut points of the piece's face lying strictly inside segment a-b. The cut
+// points were computed on the element edges and on sub-segments of them, so
+// they lie on a-b up to rounding; the tolerance is far below any mesh size.
+void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into) const
+{
+    const Vec3 pa = vertex(a), d = vertex(b) - pa;
+    const double length2 = glm::dot(d, d);
+    if (length2 <= 0.0)
+        return;
+    for (int x : m_faceCuts[size_t(face)]) {
+        if (x == a || x == b)
+            continue;
+        const Vec3 r = vertex(x) - pa;
+        const double t = glm::dot(r, d) / length2;
+        if (t <= 1e-12 || t >= 1.0 - 1e-12)
+            continue;
+        if (glm::length(r - d * t) <= kMergeDistance)
+            into.push_back(x);
+    }
+}
+
+// A region's BSP planes end at its cell: an element cut by one has a
+// neighbour across the cell border that is not, and the cut point on their
+// shared edge would be a T-vertex. Every piece gets every cut point lying on
+// its edges, so the pieces of a face meet edge to edge with bit-identical
+// vertices; loops that gained such points are triangulated around their
+// centroid (a fan from a corner would make triangles of no area).
+void PieceBuilder::insertEdgePoints(Work& piece)
+{
+    const int face = m_scene.elements[size_t(piece.element)].properties;
+    if (m_faceCuts[size_t(face)].empty())
+        return;
+    std::vector<int> loop;
+    std::vector<int> inner;
+    bool grew = false;
+    const size_t n = piece.loop.size();
+    for (size_t i = 0; i < n; ++i) {
+        const int a = piece.loop[i], b = piece.loop[(i + 1) % n];
+        loop.push_back(a);
+        inner.clear();
+        collectOnEdge(face, a, b, inner);
+        if (inner.empty())
+            continue;
+        grew = true;
+        const Vec3 pa = vertex(a), d = vertex(b) - pa;
+        std::sort(inner.begin(), inner.end(), [&](int x, int y) {
+            return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d);
+        });
+        inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
+        loop.insert(loop.end(), inner.begin(), inner.end());
+    }
+    if (grew) {
+        piece.loop = std::move(loop);
+        piece.centred = true;
+    }
+}
+
+void PieceBuilder::finish()
+{
+    for (auto& nodePieces : m_perNode)
+        for (Work& w : nodePieces)
+            insertEdgePoints(w);
+    std::vector<Piece>& out = m_scene.pieces;
+    for (size_t n = 0; n < m_scene.nodes.size(); ++n) {
+        BspNode& node = m_scene.nodes[n];
+        std::vector<Work>& pieces = m_perNode[n];
+        node.firstPiece = int(out.size());
+        // Groups [F solid | F open | O open | O solid] (prepared_scene.h).
+        auto groupOf = [&](const Work& w) {
+            const Properties& p = m_scene.properties[size_t(m_scene.elements[size_t(w.element)].properties)];
+            const bool forward = glm::dot(p.plane.normal, node.plane.normal) > 0.0;
+            return forward ? (p.solid ? 0 : 1) : (p.solid ? 3 : 2);
+        };
+        int counts[4] = {0, 0, 0, 0};
+        for (int g = 0; g < 4; ++g)
+            for (const Work& w : pieces) {
+                if (groupOf(w) != g)
+                    continue;
+                Element& element = m_scene.elements[size_t(w.element)];
+                if (element.node < 0)
+                    element.node = int(n);
+                if (w.centred) {
+                    Vec3 centre{0.0};
+                    for (int v : w.loop)
+                        centre += vertex(v);
+                    const int c = int(m_scene.pieceVertices.size());
+                    m_scene.pieceVertices.push_back(centre / double(w.loop.size()));
+                    for (size_t k = 0; k < w.loop.size(); ++k) {
+                        out.push_back({{c, w.loop[k], w.loop[(k + 1) % w.loop.size()]}, w.element});
+                        ++counts[g];
+                    }
+                    continue;
+                }
+                // Fan triangulation of the convex piece.
+                for (size_t k = 1; k + 1 < w.loop.size(); ++k) {
+                    out.push_back({{w.loop[0], w.loop[k], w.loop[k + 1]}, w.element});
+                    ++counts[g];
+                }
+            }
+        node.pieceCount = counts[0] + counts[1] + counts[2] + counts[3];
+        node.forwardPieces = counts[0] + counts[1];
+        node.forwardSolidPieces = counts[0];
+        node.oppositeSolidPieces = counts[3];
+        pieces.clear();
+        pieces.shrink_to_fit();
+    }
+}
+
+} // namespace
+
+void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> elementLoops)
+{
+    scene.pieceVertices = scene.vertices;
+    scene.pieces.clear();
+    scene.stats.lostPieces = 0;
+    scene.stats.lostPieceArea = 0.0;
+    for (Element& e : scene.elements)
+        e.node = -1;
+    PieceBuilder builder(scene, elementLoops);
+    for (size_t f = 0; f < scene.faces.size(); ++f)
+        builder.pushFace(int(f));
+    builder.finish();
+    for (Patch& p : scene.patches)
+        p.node = p.elementCount > 0 ? scene.elements[size_t(p.firstElement)].node : -1;
+    scene.stats.pieces = int(scene.pieces.size());
+}
+
+} // namespace regio::solver

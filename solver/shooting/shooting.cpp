@@ -1,0 +1,157 @@
+#include "solver/shooting/shooting.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace regio::solver {
+
+double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, VisibilityMode mode)
+    : m_scene(scene)
+    , m_hemicube(hemicubeResolution)
+    , m_visibility(scene, m_hemicube, mode)
+    , m_buffer(m_visibility.makeBuffer())
+{
+    const size_t elements = scene.elements.size();
+    m_radiosity.resize(elements);
+    m_unshot.resize(elements);
+    m_patchPower.assign(scene.patches.size(), Rgb{0.0});
+    Rgb reflectanceArea{0.0};
+    for (size_t e = 0; e < elements; ++e) {
+        const Element& el = scene.elements[e];
+        const Properties& p = scene.properties[static_cast<size_t>(el.properties)];
+        m_radiosity[e] = p.emission;
+        m_unshot[e] = p.emission;
+        m_emitted += p.emission * el.area;
+        m_patchPower[static_cast<size_t>(el.patch)] += p.emission * el.area;
+        m_totalArea += el.area;
+        reflectanceArea += p.reflectance * el.area;
+    }
+    if (m_totalArea > 0.0)
+        m_meanReflectance = reflectanceArea / m_totalArea;
+}
+
+int Shooting::selectShooter() const
+{
+    int best = -1;
+    double bestPower = 0.0;
+    for (size_t p = 0; p < m_patchPower.size(); ++p) {
+        const double power = luminance(m_patchPower[p]);
+        if (power > bestPower) {
+            bestPower = power;
+            best = static_cast<int>(p);
+        }
+    }
+    // Every luminance weight is positive: a patch with power in any channel is found.
+    return best;
+}
+
+ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLock)
+{
+    const int shooter = selectShooter();
+    if (shooter < 0)
+        return ShotResult::NothingToShoot;
+    const Patch& patch = m_scene.patches[static_cast<size_t>(shooter)];
+    const Properties& props = m_scene.properties[static_cast<size_t>(patch.properties)];
+    const Vec3& a = m_scene.vertices[static_cast<size_t>(patch.vertices[0])];
+    const Vec3& b = m_scene.vertices[static_cast<size_t>(patch.vertices[1])];
+    const ShooterFrame frame = ShooterFrame::make(patch.centroid, props.plane.normal, b - a);
+
+    if (!m_visibility.render(frame, m_buffer, cancel))
+        return ShotResult::Cancelled;
+    const size_t elements = m_scene.elements.size();
+    m_perItem.assign(elements + kFirstElementItem, 0.0);
+    m_buffer.accumulate(m_hemicube, m_perItem);
+
+    std::unique_lock<std::mutex> lock;
+    if (applyLock)
+        lock = std::unique_lock<std::mutex>(*applyLock);
+
+    // The shooter's power: the area-weighted sum of its elements' unshot radiosity.
+    Rgb power{0.0};
+    for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
+        power += m_unshot[static_cast<size_t>(e)] * m_scene.elements[static_cast<size_t>(e)].area;
+        m_unshot[static_cast<size_t>(e)] = Rgb{0.0};
+    }
+    m_patchPower[static_cast<size_t>(shooter)] = Rgb{0.0};
+
+    m_lastFormFactors.assign(elements, 0.0);
+    Rgb received{0.0};
+    for (size_t j = 0; j < elements; ++j) {
+        const double f = m_perItem[j + kFirstElementItem];
+        if (f == 0.0)
+            continue;
+        m_lastFormFactors[j] = f;
+        const Element& el = m_scene.elements[j];
+        const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
+        const Rgb incident = power * f; // W arriving on element j
+        const Rgb reflected = rho * incident;
+        const Rgb delta = reflected / el.area; // dB_j = rho_j dB_i F_ij A_i / A_j
+        m_radiosity[j] += delta;
+        m_unshot[j] += delta;
+        m_patchPower[static_cast<size_t>(el.patch)] += reflected;
+        m_absorbed += incident - reflected;
+        received += incident;
+    }
+    m_escaped += power - received;
+    m_lastShooter = shooter;
+    m_lastEmpty = m_perItem[kEmptyItem];
+    m_lastBlocked = m_perItem[kBlockerItem];
+    ++m_iterations;
+    return ShotResult::Shot;
+}
+
+EnergyBalance Shooting::energy() const
+{
+    EnergyBalance e;
+    e.emitted = m_emitted;
+    e.absorbed = m_absorbed;
+    e.escaped = m_escaped;
+    for (size_t j = 0; j < m_unshot.size(); ++j)
+        e.unshot += m_unshot[j] * m_scene.elements[j].area;
+    return e;
+}
+
+double Shooting::unshotRatio(const EnergyBalance& books) const
+{
+    const Rgb& unshot = books.unshot;
+    double ratio = 0.0;
+    for (int c = 0; c < 3; ++c)
+        if (m_emitted[c] > 0.0)
+            ratio = std::max(ratio, unshot[c] / m_emitted[c]);
+    return ratio;
+}
+
+void Shooting::replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot)
+{
+    m_radiosity = std::move(radiosity);
+    m_unshot = std::move(unshot);
+    m_patchPower.assign(m_scene.patches.size(), Rgb{0.0});
+    m_totalArea = 0.0;
+    Rgb reflectanceArea{0.0};
+    for (size_t e = 0; e < m_scene.elements.size(); ++e) {
+        const Element& el = m_scene.elements[e];
+        m_patchPower[static_cast<size_t>(el.patch)] += m_unshot[e] * el.area;
+        m_totalArea += el.area;
+        reflectanceArea += m_scene.properties[static_cast<size_t>(el.properties)].reflectance * el.area;
+    }
+    if (m_totalArea > 0.0)
+        m_meanReflectance = reflectanceArea / m_totalArea;
+}
+
+Rgb Shooting::ambient(const EnergyBalance& books) const
+{
+    if (m_totalArea <= 0.0)
+        return Rgb{0.0};
+    const Rgb& unshot = books.unshot;
+    Rgb result{0.0};
+    for (int c = 0; c < 3; ++c) {
+        const double rho = std::min(m_meanReflectance[c], 0.999);
+        result[c] = unshot[c] / m_totalArea / (1.0 - rho);
+    }
+    return result;
+}
+
+} // namespace regio::solver

@@ -1,0 +1,113 @@
+#pragma once
+// Progressive refinement radiosity, shooting variant (Cohen et al. 1988, as
+// the paper's §5.6 iterates it). One shot: the patch with the most unshot
+// power (area x unshot radiosity, by luminance) places a hemicube at its
+// centre, the visibility fills the item buffer, delta form factors are summed
+// per receiving element and
+//     dB_j = rho_j * dB_i * F_ij * A_i / A_j           (per channel)
+// is added to each receiver's radiosity and unshot radiosity. A patch's unshot
+// radiosity is the area-weighted mean of its elements'.
+//
+// Energy is booked exactly (watts = W/m^2 x m^2, per channel):
+//     emitted = absorbed + unshot + escaped
+// where a shot's power P_i = A_i dB_i splits into what each receiver absorbs,
+// (1 - rho_j) P_i F_ij, what it reflects back into the unshot pool, rho_j P_i
+// F_ij, and what lands on no receiver, P_i (1 - sum_j F_ij): the sky of an open
+// scene and the backs of surfaces.
+#include "solver/visibility/hemicube.h"
+#include "solver/visibility/item_buffer.h"
+#include "solver/prepare/prepared_scene.h"
+#include "solver/visibility/visibility.h"
+
+#include <atomic>
+#include <mutex>
+#include <vector>
+
+namespace regio::solver {
+
+// Rec. 709 luminance weights: "most unshot power" and the ambient term are
+// judged by brightness, not by one channel.
+double luminance(const Rgb& c);
+
+struct EnergyBalance {
+    Rgb emitted{0.0};
+    Rgb absorbed{0.0};
+    Rgb unshot{0.0};
+    Rgb escaped{0.0};
+};
+
+enum class ShotResult { Shot, NothingToShoot, Cancelled };
+
+class Shooting {
+public:
+    // Keeps a reference to `scene`, which must outlive it; starts with every
+    // element's radiosity and unshot radiosity at its emission.
+    Shooting(const PreparedScene& scene, int hemicubeResolution, VisibilityMode mode);
+
+    // One shot of the patch with the most unshot power. The hemicube is
+    // rendered without any lock; `applyLock`, when given, is held only while
+    // the results are written (so another thread can copy them meanwhile). A
+    // cancelled shot changes nothing.
+    ShotResult shoot(const std::atomic<bool>* cancel = nullptr, std::mutex* applyLock = nullptr);
+
+    int iterations() const { return m_iterations; }
+    // The patch that would shoot next; -1 if no patch has unshot power.
+    int selectShooter() const;
+
+    const std::vector<Rgb>& radiosity() const { return m_radiosity; }
+    const std::vector<Rgb>& unshotRadiosity() const { return m_unshot; }
+    // Unshot power of each patch (area-weighted sum of its elements').
+    const std::vector<Rgb>& patchUnshotPower() const { return m_patchPower; }
+
+    // After the mesh grew or was regrouped (adaptive subdivision, §5.7): the
+    // per-element state in the scene's new element order. Patch powers and
+    // area sums are recomputed; the energy books keep what was absorbed and
+    // escaped, so new elements must carry unshot power that came from old ones.
+    void replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot);
+
+    EnergyBalance energy() const;
+    // Largest unshot / emitted power over the channels that emit (0 if none).
+    double unshotRatio() const { return unshotRatio(energy()); }
+    // The same from books already summed (energy() walks every element).
+    double unshotRatio(const EnergyBalance& books) const;
+    // Cohen et al. 1988: the unshot power spread uniformly with the mean
+    // reflectance's interreflection factor 1/(1 - rho_avg); displaying
+    // B_j + rho_j * ambient gives a plausible picture after few shots.
+    Rgb ambient() const { return ambient(energy()); }
+    Rgb ambient(const EnergyBalance& books) const;
+
+    // Form factors of the last shot from its shooter to every element (F_ij),
+    // and what it lost: the fractions that hit nothing and back faces.
+    int lastShooter() const { return m_lastShooter; }
+    const std::vector<double>& lastFormFactors() const { return m_lastFormFactors; }
+    double lastEscapedFraction() const { return m_lastEmpty; }
+    double lastBlockedFraction() const { return m_lastBlocked; }
+
+    const Visibility& visibility() const { return m_visibility; }
+    int hemicubeResolution() const { return m_hemicube.resolution(); }
+
+private:
+    const PreparedScene& m_scene;
+    Hemicube m_hemicube;
+    Visibility m_visibility;
+    ItemBuffer m_buffer;
+
+    std::vector<Rgb> m_radiosity;  // per element, W/m^2
+    std::vector<Rgb> m_unshot;     // per element, W/m^2
+    std::vector<Rgb> m_patchPower; // per patch, W
+    std::vector<double> m_perItem; // delta form factor sums per item id
+
+    Rgb m_emitted{0.0};
+    Rgb m_absorbed{0.0};
+    Rgb m_escaped{0.0};
+    double m_totalArea = 0.0;
+    Rgb m_meanReflectance{0.0};
+    int m_iterations = 0;
+
+    int m_lastShooter = -1;
+    std::vector<double> m_lastFormFactors;
+    double m_lastEmpty = 0.0;
+    double m_lastBlocked = 0.0;
+};
+
+} // namespace regio::solver

@@ -1,0 +1,56 @@
+#pragma once
+// The item buffer of one hemicube: for every pixel of the five faces, the id
+// of the element seen through it (§5.6, "scan-line filled with the element
+// identifier"). Two ids are reserved: nothing seen (the sky of an open scene)
+// and a blocker that receives nothing (a back-facing surface, Appendix A's
+// skipped nodes that DESIGN.md paints instead). Element e is stored as e + 2,
+// so summing delta form factors per id needs no branch: slots 0 and 1 of the
+// result collect what escaped and what hit back faces.
+#include "solver/visibility/hemicube.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace regio::solver {
+
+using ItemId = std::uint32_t;
+inline constexpr ItemId kEmptyItem = 0;
+inline constexpr ItemId kBlockerItem = 1;
+inline constexpr ItemId kFirstElementItem = 2;
+inline constexpr ItemId itemOfElement(std::uint32_t element) { return element + kFirstElementItem; }
+
+class ItemBuffer {
+public:
+    ItemBuffer() = default;
+    // Buffers for a hemicube; `withDepth` adds the z-buffer's depth plane.
+    explicit ItemBuffer(const Hemicube& hemicube, bool withDepth = false);
+
+    int resolution() const { return m_n; }
+    bool hasDepth() const { return !m_depth.empty(); }
+
+    // Resets every pixel to kEmptyItem (and depth to "infinitely far").
+    void clear();
+
+    ItemId* face(HemicubeFace f) { return m_ids.data() + m_offset[static_cast<int>(f)]; }
+    const ItemId* face(HemicubeFace f) const { return m_ids.data() + m_offset[static_cast<int>(f)]; }
+    // Depth stored as 1/w (w = distance along the face's axis): larger is nearer.
+    float* depth(HemicubeFace f) { return m_depth.data() + m_offset[static_cast<int>(f)]; }
+    int width(HemicubeFace) const { return m_n; }
+    int height(HemicubeFace f) const { return f == HemicubeFace::Top ? m_n : m_n / 2; }
+    ItemId at(HemicubeFace f, int x, int y) const { return face(f)[y * m_n + x]; }
+    std::span<const ItemId> all() const { return m_ids; }
+
+    // Adds each pixel's delta form factor to perItem[id]; perItem must hold
+    // every id painted. Consecutive pixels of one id are summed before the
+    // scattered add: runs are long, and the add is the random access.
+    void accumulate(const Hemicube& hemicube, std::span<double> perItem) const;
+
+private:
+    int m_n = 0;
+    int m_offset[kHemicubeFaceCount]{};
+    std::vector<ItemId> m_ids;
+    std::vector<float> m_depth;
+};
+
+} // namespace regio::solver

@@ -1,0 +1,62 @@
+#include "solver/visibility/painter_order.h"
+
+#include "solver/visibility/hemicube_raster.h"
+#include "solver/visibility/traversal.h"
+#include "solver/visibility/visibility.h"
+
+namespace regio::solver {
+
+namespace {
+
+PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shooterPlane)
+{
+    PainterOrder out;
+    forEachNodeBackToFront(
+        scene, eye,
+        [&](int region) {
+            if (shooterPlane && boxBehindPlane(scene.regions[size_t(region)].bounds, *shooterPlane)) {
+                out.culledRegions.push_back(region);
+                return false;
+            }
+            out.regions.push_back(region);
+            return true;
+        },
+        [&](int nodeIndex, bool eyeInFront) {
+            out.nodes.push_back(nodeIndex);
+            const BspNode& node = scene.nodes[size_t(nodeIndex)];
+            forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
+                for (int i = begin; i < end; ++i) {
+                    const int element = scene.pieces[size_t(i)].element;
+                    PaintStep* last = out.steps.empty() ? nullptr : &out.steps.back();
+                    if (last && last->element == element && last->node == nodeIndex && last->receives == receives
+                        && last->firstPiece + last->pieceCount == i)
+                        ++last->pieceCount;
+                    else
+                        out.steps.push_back({element, nodeIndex, node.region, receives, i, 1});
+                }
+            });
+        });
+    return out;
+}
+
+} // namespace
+
+PainterOrder painterOrder(const PreparedScene& scene, const Vec3& eye) { return walk(scene, eye, nullptr); }
+
+PainterOrder painterOrder(const PreparedScene& scene, const Vec3& eye, const Plane& shooterPlane)
+{
+    return walk(scene, eye, &shooterPlane);
+}
+
+PainterOrder painterOrderFromPatch(const PreparedScene& scene, int patch)
+{
+    // The shooter's frame and plane as Shooting::shoot and Visibility build them.
+    const Patch& p = scene.patches[size_t(patch)];
+    const Vec3& a = scene.vertices[size_t(p.vertices[0])];
+    const Vec3& b = scene.vertices[size_t(p.vertices[1])];
+    const ShooterFrame frame =
+        ShooterFrame::make(p.centroid, scene.properties[size_t(p.properties)].plane.normal, b - a);
+    return painterOrder(scene, frame.origin, Plane::fromPointNormal(frame.origin, frame.n));
+}
+
+} // namespace regio::solver

@@ -1,0 +1,224 @@
+#include "solver/visibility/visibility.h"
+
+#include "solver/visibility/traversal.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace regio::solver {
+
+const char* visibilityModeName(VisibilityMode mode)
+{
+    return mode == VisibilityMode::Painter ? "painter" : "zbuffer";
+}
+
+namespace {
+// How often (in elements) a render looks at the cancel flag: a relaxed
+// atomic load is cheap, but not per element.
+constexpr int kCancelCheckInterval = 256;
+} // namespace
+
+Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, VisibilityMode mode)
+    : m_scene(scene)
+    , m_hemicube(hemicube)
+    , m_mode(mode)
+    , m_raster(hemicube)
+{
+}
+
+ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == VisibilityMode::ZBuffer); }
+
+void Visibility::prepareFrame(const ShooterFrame& frame)
+{
+    m_frame = frame;
+    m_shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
+    const size_t count = m_scene.pieceVertices.size();
+    if (m_stamp.size() != count) {
+        m_local.resize(count);
+        m_outcode.resize(count);
+        m_projected.resize(count * kHemicubeFaceCount);
+        m_stamp.assign(count, 0);
+        m_currentStamp = 0;
+    }
+    if (++m_currentStamp == 0) { // wrapped: forget every stamp
+        std::fill(m_stamp.begin(), m_stamp.end(), 0);
+        m_currentStamp = 1;
+    }
+}
+
+inline void Visibility::touch(int vertex)
+{
+    const auto v = static_cast<size_t>(vertex);
+    if (m_stamp[v] == m_currentStamp)
+        return;
+    m_stamp[v] = m_currentStamp;
+    const Vec3 local = m_frame.toLocal(m_scene.pieceVertices[v]);
+    const std::uint32_t code = hemicubeOutcode(local);
+    m_local[v] = local;
+    m_outcode[v] = code;
+    // Project once per shooter onto the faces whose frustum holds the vertex
+    // (one, or two on a border): elements inside a face then skip projection.
+    FixedVertex* projected = &m_projected[v * kHemicubeFaceCount];
+    for (int f = 0; f < kHemicubeFaceCount; ++f)
+        if (!(code & faceOutcodeBits(f)))
+            projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
+}
+
+bool Visibility::regionCulled(int region) const
+{
+    return boxBehindPlane(m_scene.regions[static_cast<size_t>(region)].bounds, m_shooterPlane);
+}
+
+template <class Paint>
+inline void Visibility::rasterisePiece(int piece, Paint&& paint)
+{
+    ++m_stats.elementsVisited;
+    const Piece& e = m_scene.pieces[static_cast<size_t>(piece)];
+    touch(e.vertices[0]);
+    touch(e.vertices[1]);
+    touch(e.vertices[2]);
+    const auto i0 = static_cast<size_t>(e.vertices[0]), i1 = static_cast<size_t>(e.vertices[1]),
+               i2 = static_cast<size_t>(e.vertices[2]);
+    const std::uint32_t andCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
+    // On or below the shooter's plane, or outside every face (a bit of each
+    // face's group is set).
+    bool hidden = (andCode & kBelowBaseBit) != 0;
+    if (hidden)
+        return;
+    hidden = true;
+    for (int f = 0; f < kHemicubeFaceCount && hidden; ++f)
+        hidden = (andCode & faceOutcodeBits(f)) != 0;
+    if (hidden)
+        return;
+    ++m_stats.elementsRasterised;
+    const std::uint32_t orCode = m_outcode[i0] | m_outcode[i1] | m_outcode[i2];
+    const Vec3* const local[3] = {&m_local[i0], &m_local[i1], &m_local[i2]};
+    const FixedVertex* const projected[3] = {&m_projected[i0 * kHemicubeFaceCount],
+                                             &m_projected[i1 * kHemicubeFaceCount],
+                                             &m_projected[i2 * kHemicubeFaceCount]};
+    m_raster.rasterizeTriangle(local, projected, orCode, andCode, paint);
+}
+
+void Visibility::paintPiece(int piece, ItemId id, ItemBuffer& buffer)
+{
+    const int n = m_hemicube.resolution();
+    rasterisePiece(piece, [&](HemicubeFace f, int row, int x0, int x1) {
+        ItemId* ids = buffer.face(f) + row * n;
+        std::fill(ids + x0, ids + x1, id);
+    });
+}
+
+void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
+{
+    // Depth 1/w is affine in the face's screen coordinates and exact from the
+    // plane: with p = w (sx, sy, 1) in face coordinates and plane n.p + d = 0,
+    // 1/w = -(na sx + nb sy + nw) / d.
+    const Piece& p = m_scene.pieces[static_cast<size_t>(piece)];
+    const Element& e = m_scene.elements[static_cast<size_t>(p.element)];
+    const Vec3 nLocal = m_frame.directionToLocal(e.normal);
+    const double dLocal = -glm::dot(nLocal, m_frame.toLocal(m_scene.pieceVertices[static_cast<size_t>(p.vertices[0])]));
+    if (dLocal == 0.0)
+        return; // the plane contains the shooter's centre: seen edge-on
+    const int n = m_hemicube.resolution();
+    const double pixel = 2.0 / n;
+    // Where a back face meets a front face along a silhouette edge both cover
+    // the edge pixels at almost equal depth, and float rounding would pick
+    // either. The back face is never in front there (it belongs to the same
+    // solid), so it is pushed back by far more than the rounding; a thin
+    // two-sided wall then shows its facing side, as in the painter.
+    //
+    // Unlike the painter, the z-buffer also lets a receiver win over the
+    // coplanar back face of a solid it touches (a box standing on a box). The
+    // painter's node order tells the two cases apart (Visibility::render); a
+    // depth bias cannot without giving silhouette edge pixels to back faces.
+    // Such contact areas are seen only from an eye inside a solid (a shooter
+    // patch whose centre lies under a box), so item buffers from eyes outside
+    // every solid are unaffected.
+    const double scale = (id == kBlockerItem ? 1.0 - 1e-5 : 1.0) / -dLocal;
+    rasterisePiece(piece, [&](HemicubeFace f, int row, int x0, int x1) {
+        const Vec3 nf = faceCoordinates(f, nLocal);
+        const double sy = (row + 0.5) * pixel - (f == HemicubeFace::Top ? 1.0 : 0.0);
+        const double base = (nf.y * sy + nf.z) * scale;
+        const double slope = nf.x * scale;
+        ItemId* ids = buffer.face(f) + row * n;
+        float* depth = buffer.depth(f) + row * n;
+        const double first = base + slope * (0.5 * pixel - 1.0); // depth at column 0
+        const double step = slope * pixel;
+        // Branch-free so that the compiler can vectorise the span.
+        for (int x = x0; x < x1; ++x) {
+            // A covered pixel whose centre ray grazes past the plane (snapping
+            // at the horizon) still belongs to the element: never below "far".
+            const float inv = std::max(static_cast<float>(first + step * x), std::numeric_limits<float>::min());
+            const bool nearer = inv > depth[x];
+            depth[x] = nearer ? inv : depth[x];
+            ids[x] = nearer ? id : ids[x];
+        }
+    });
+}
+
+bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+{
+    prepareFrame(frame);
+    buffer.clear();
+    int sinceCheck = 0;
+    bool cancelled = false;
+    auto shouldStop = [&](int elements) {
+        sinceCheck += elements;
+        if (cancel && sinceCheck >= kCancelCheckInterval) {
+            sinceCheck = 0;
+            cancelled = cancel->load(std::memory_order_relaxed);
+        }
+        return cancelled;
+    };
+
+    if (m_mode == VisibilityMode::Painter) {
+        forEachNodeBackToFront(
+            m_scene, frame.origin,
+            [&](int region) {
+                const bool culled = cancelled || regionCulled(region);
+                m_stats.regionsCulled += culled && !cancelled;
+                return !culled;
+            },
+            [&](int nodeIndex, bool eyeInFront) {
+                if (cancelled)
+                    return;
+                const BspNode& node = m_scene.nodes[static_cast<size_t>(nodeIndex)];
+                forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
+                    for (int i = begin; i < end; ++i) {
+                        const auto element = static_cast<std::uint32_t>(m_scene.pieces[static_cast<size_t>(i)].element);
+                        paintPiece(i, receives ? itemOfElement(element) : kBlockerItem, buffer);
+                    }
+                });
+                shouldStop(node.pieceCount);
+            });
+        return !cancelled;
+    }
+
+    // Z-buffer: piece array order (node by node), regions culled the same way.
+    std::vector<char>& culled = m_regionCulled;
+    culled.resize(m_scene.regions.size());
+    for (size_t r = 0; r < culled.size(); ++r) {
+        culled[r] = regionCulled(static_cast<int>(r));
+        m_stats.regionsCulled += culled[r];
+    }
+    for (const BspNode& node : m_scene.nodes) {
+        if (node.region >= 0 && culled[static_cast<size_t>(node.region)])
+            continue;
+        for (int i = node.firstPiece; i < node.firstPiece + node.pieceCount; ++i) {
+            const Piece& piece = m_scene.pieces[static_cast<size_t>(i)];
+            const Element& e = m_scene.elements[static_cast<size_t>(piece.element)];
+            const double facing =
+                glm::dot(e.normal, frame.origin - m_scene.pieceVertices[static_cast<size_t>(piece.vertices[0])]);
+            depthTestPiece(i, facing > 0.0 ? itemOfElement(static_cast<std::uint32_t>(piece.element)) : kBlockerItem,
+                           buffer);
+            if (shouldStop(1))
+                return false;
+        }
+    }
+    return true;
+}
+
+} // namespace regio::solver

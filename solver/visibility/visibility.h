@@ -1,0 +1,113 @@
+#pragma once
+// Hemicube visibility: fills an item buffer with what a shooter sees.
+//
+// Painter (the paper's method, §5.6 and Appendix A): the regional tree and the
+// regional BSP trees are walked back to front from the shooter's centre and
+// every element is painted in that order, as its pieces (solver/prepare/pieces.h)
+// node by node; later pieces overwrite earlier ones, no depth is stored or
+// interpolated. Regions whose contents lie behind the shooter's plane are
+// culled whole. Pieces facing away from the shooter are painted with
+// kBlockerItem: surfaces are opaque from both sides.
+//
+// Inside a node, coplanar receivers and blockers overlap where two surfaces
+// touch; the order decides who wins (forEachPaintRange): back faces of open
+// parts first, then the receivers, then back faces of solids. So a thin
+// two-sided wall receives on the side that faces the eye, and a face lying on
+// a solid (the bottom of a box standing on a box, and the top it stands on)
+// receives nothing there: it faces into that solid.
+//
+// Z-buffer (the reference): the same projection, clipping and pixel rule, any
+// order, a depth test per pixel (depth = 1/w, exact from the element plane).
+//
+// Both share one per-shooter vertex cache: each vertex is transformed into the
+// shooter's frame and outcoded once per shooter, whatever number of elements
+// share it (DESIGN.md speed notes).
+#include "solver/visibility/hemicube.h"
+#include "solver/visibility/hemicube_raster.h"
+#include "solver/visibility/item_buffer.h"
+#include "solver/prepare/prepared_scene.h"
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+namespace regio::solver {
+
+enum class VisibilityMode { Painter, ZBuffer };
+
+// The painter's order inside one BSP node: calls op(begin, end, receives)
+// for the node's piece ranges in paint order (see the top of this file and
+// prepared_scene.h for the groups [F solid | F open | O open | O solid]).
+template <class Op>
+inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
+{
+    const int begin = node.firstPiece, end = node.firstPiece + node.pieceCount;
+    const int forwardEnd = begin + node.forwardPieces;
+    const int forwardSolidEnd = begin + node.forwardSolidPieces;
+    const int oppositeSolidBegin = end - node.oppositeSolidPieces;
+    if (eyeInFront) {
+        op(forwardEnd, oppositeSolidBegin, false); // O open: blockers
+        op(begin, forwardEnd, true);               // F: receivers
+        op(oppositeSolidBegin, end, false);        // O solid: blockers
+    } else {
+        op(forwardSolidEnd, forwardEnd, false);    // F open: blockers
+        op(forwardEnd, end, true);                 // O: receivers
+        op(begin, forwardSolidEnd, false);         // F solid: blockers
+    }
+}
+
+const char* visibilityModeName(VisibilityMode mode);
+
+struct VisibilityStats {
+    std::int64_t regionsCulled = 0;  // whole regions skipped (behind the shooter plane)
+    // Counted per painted piece triangle (solver/prepare/pieces.h); most elements are
+    // one piece.
+    std::int64_t elementsVisited = 0;
+    std::int64_t elementsRasterised = 0; // not rejected by outcodes
+};
+
+class Visibility {
+public:
+    // Keeps a reference to `scene` and `hemicube`; both must outlive it. The
+    // scene may grow (adaptive subdivision): caches follow its vertex count.
+    Visibility(const PreparedScene& scene, const Hemicube& hemicube, VisibilityMode mode);
+
+    VisibilityMode mode() const { return m_mode; }
+    // The item buffer this visibility writes; it has a depth plane in z-buffer mode.
+    ItemBuffer makeBuffer() const;
+
+    // Renders the view of a shooter sitting on the plane `frame.n` through
+    // `frame.origin`. When `cancel` becomes true the render stops early and
+    // returns false (the buffer is then incomplete).
+    bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr);
+
+    const VisibilityStats& stats() const { return m_stats; }
+
+private:
+    void prepareFrame(const ShooterFrame& frame);
+    void touch(int vertex);
+    template <class Paint>
+    void rasterisePiece(int piece, Paint&& paint);
+    void paintPiece(int piece, ItemId id, ItemBuffer& buffer);
+    void depthTestPiece(int piece, ItemId id, ItemBuffer& buffer);
+    bool regionCulled(int region) const;
+
+    const PreparedScene& m_scene;
+    const Hemicube& m_hemicube;
+    VisibilityMode m_mode;
+    HemicubeRaster m_raster;
+    ShooterFrame m_frame;
+    Plane m_shooterPlane;
+
+    // Per-vertex cache, valid for the shooter whose stamp it carries.
+    std::vector<Vec3> m_local;
+    std::vector<std::uint32_t> m_outcode;
+    std::vector<FixedVertex> m_projected; // kHemicubeFaceCount per vertex
+    std::vector<std::uint32_t> m_stamp;
+    std::uint32_t m_currentStamp = 0;
+    std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter
+
+    VisibilityStats m_stats;
+};
+
+} // namespace regio::solver
