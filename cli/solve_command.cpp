@@ -354,7 +354,7 @@ bool writeReport(const std::string& path, const nlohmann::json& report)
     return true;
 }
 
-// The lit model and the picture (issue 4): smooth vertex radiosity (§6)
+// The lit model and the picture: smooth vertex radiosity (§6)
 // unless --flat; display values only ever touch the copies written out.
 bool writeSolutionOutputs(const Options& options, const model::Scene& scene, const solver::Solver& s)
 {

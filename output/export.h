@@ -1,5 +1,5 @@
 #pragma once
-// Output of a solution (issue 4, points 5 to 7): the lit model in the format
+// Output of a solution: the lit model in the format
 // its file name asks for, and a software picture from a camera. This is what
 // `regio-solve solve --out FILE --image FILE.png` calls, and what the editor
 // can call to export.

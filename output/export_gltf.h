@@ -1,5 +1,5 @@
 #pragma once
-// glTF 2.0 export of a lit model (issue 4, point 6): one mesh, one triangle
+// glTF 2.0 export of a lit model: one mesh, one triangle
 // primitive with
 //   POSITION    float vec3, metres (glTF is y-up, right-handed, metres: as Regio)
 //   NORMAL      float vec3, unit

@@ -1,5 +1,5 @@
 #pragma once
-// Wavefront OBJ export of a lit model (issue 4, point 6) with vertex colours
+// Wavefront OBJ export of a lit model with vertex colours
 // in the common "v x y z r g b" extension (MeshLab, Blender, CloudCompare read
 // it): r g b are the display colour, display-encoded, in [0,1]. Normals as
 // "vn"; triangles grouped by input face ("g <face id>") in scene order, so a

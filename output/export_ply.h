@@ -1,5 +1,5 @@
 #pragma once
-// PLY export of a lit model (issue 4, point 6): binary little endian, one
+// PLY export of a lit model: binary little endian, one
 // vertex element with
 //   x y z                          float, metres
 //   nx ny nz                       float, unit normal

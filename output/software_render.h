@@ -1,5 +1,5 @@
 #pragma once
-// A software picture of a lit model (issue 4, point 7): for reports and batch
+// A software picture of a lit model: for reports and batch
 // machines, no GL needed. Perspective projection from a model::Camera,
 // clipping at a near plane, a z-buffer, and Gouraud shading: the per-vertex
 // display colours are interpolated (perspective-correct, in linear light) and

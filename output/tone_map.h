@@ -1,5 +1,5 @@
 #pragma once
-// Display values of a solution (paper §6 "Output"; DESIGN.md pipeline step 7):
+// Display values of a solution (paper §6 "Scene rendering"; the last step of the pipeline):
 // exposure and gamma tone mapping, applied when a solution is shown or
 // exported, never to the solution itself.
 //

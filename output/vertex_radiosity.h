@@ -1,5 +1,5 @@
 #pragma once
-// Smooth vertex radiosity (paper §6, issue 4 point 4): the element solution
+// Smooth vertex radiosity (paper §6): the element solution
 // turned into a Gouraud-shaded lit mesh.
 //
 //   - Element corners are welded by position (quantised hash) within one

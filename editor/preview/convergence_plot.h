@@ -1,5 +1,5 @@
 #pragma once
-// The convergence plot (issue 7, point 4): per iteration, the unshot power,
+// The convergence plot: per iteration, the unshot power,
 // what was absorbed and what escaped, and the error of the energy books
 // (emitted - absorbed - unshot - escaped), all as fractions of the emitted
 // power on a logarithmic axis (QtCharts).

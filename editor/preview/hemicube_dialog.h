@@ -1,5 +1,5 @@
 #pragma once
-// The hemicube of one patch (issue 7, point 4): the five faces of its item
+// The hemicube of one patch: the five faces of its item
 // buffer unfolded around the top face, every element in its own colour, so
 // one sees what a shot of that patch paints and in which order it hides.
 #include "editor/preview/hemicube_images.h"

@@ -1,6 +1,6 @@
 #pragma once
-// The five faces of a patch's hemicube item buffer as pictures (issue 7,
-// "a hemicube view of a chosen patch"): every element in its own colour,
+// The five faces of a patch's hemicube item buffer as pictures, for the
+// hemicube view of a chosen patch: every element in its own colour,
 // the sky black, back faces (blockers that receive nothing) dark grey.
 // Built on the preview's worker thread; Qt-free so it can be.
 #include "solver/visibility/hemicube_view.h"

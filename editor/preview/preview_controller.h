@@ -1,5 +1,5 @@
 #pragma once
-// The radiosity preview inside the editor (issue 7): the glue between the
+// The radiosity preview inside the editor: the glue between the
 // document, the preview runner, the viewport's layers and the preview's
 // docks, menus and status bar. MainWindow creates one and asks it to fill
 // the Solve menu and toolbar; everything else lives here and in the files

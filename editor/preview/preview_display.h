@@ -1,5 +1,5 @@
 #pragma once
-// How a preview frame becomes viewport layers (DESIGN.md pipeline step 7):
+// How a preview frame becomes viewport layers (paper §6, docs/architecture.md "From JSON to pixels"):
 // the Gouraud-shaded lit mesh with the ambient term, tone-mapped (exposure,
 // gamma) or in false colour, and the element mesh as lines (it shows where
 // adaptive subdivision split elements and how anchoring closed T-vertices).

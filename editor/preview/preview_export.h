@@ -1,5 +1,5 @@
 #pragma once
-// Exports of the preview (issue 7, point 5): the lit model as the viewport
+// Exports of the preview: the lit model as the viewport
 // shows it (smooth vertex radiosity, the same display settings), and a
 // self-contained scene for batch machines with the regio-solve command that
 // solves it at final quality with the preview's display settings.

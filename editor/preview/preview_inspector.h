@@ -1,5 +1,5 @@
 #pragma once
-// The inspector (issue 7, point 4): a viewport tool; a left click on the
+// The inspector: a viewport tool; a left click on the
 // solution names the element under the cursor with its radiosity, unshot
 // radiosity, area, patch, face and region. Other buttons keep navigating.
 #include "editor/preview/preview_session.h"

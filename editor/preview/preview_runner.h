@@ -1,5 +1,5 @@
 #pragma once
-// The preview runner of DESIGN.md: starts, pauses, stops and drops embedded
+// The preview runner: starts, pauses, stops and drops embedded
 // solves (PreviewSession, one worker thread each) and hands the newest frame
 // to the UI thread. It never waits on a solver: dropped sessions finish
 // their shot on their own thread and are joined once they have exited.

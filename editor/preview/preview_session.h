@@ -1,5 +1,5 @@
 #pragma once
-// One embedded solve (DESIGN.md "preview runner"): a worker thread that owns a
+// One embedded solve of the preview runner: a worker thread that owns a
 // solver::Solver built from a copy of the scene, shoots on it and publishes
 // PreviewFrames. Qt-free: the owner learns about events through a callback
 // that may be called from the worker thread (PreviewRunner turns it into a

@@ -1,5 +1,5 @@
 #pragma once
-// The solver dock (issue 7, points 1 and 4): every solver setting of the
+// The solver dock: every solver setting of the
 // scene, edited through SetSolverSettings (undoable, saved in the file),
 // presets and the dry run; Run / Pause / Stop / Reset and "live"; the display
 // controls of the preview (exposure, gamma, ambient, false colour with its

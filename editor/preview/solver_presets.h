@@ -1,5 +1,5 @@
 #pragma once
-// Solver presets of the solver dock and the dry run (issue 7, point 1).
+// Solver presets of the solver dock and the dry run.
 //   draft:  interactive previews on the sample scenes while editing
 //   normal: the file format's defaults
 //   final:  what a batch machine should run ("Export for batch")

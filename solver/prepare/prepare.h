@@ -1,5 +1,5 @@
 #pragma once
-// Scene preparation, the first four steps of the pipeline (DESIGN.md):
+// Scene preparation, the first four steps of the pipeline (docs/architecture.md):
 // regional tree (§5.2), face assignment to the region cells with clipping
 // (Warnock variant, §3), regional BSP trees (§5.3), strip triangulation into
 // patches (§5.4) and elements (§5.5). The result is read-only input for the

@@ -17,7 +17,7 @@ Hemicube::Hemicube(int resolution)
     // top face (x, y, 1): dA / (pi (x^2 + y^2 + 1)^2); side face (1, y, z):
     // z dA / (pi (y^2 + z^2 + 1)^2). Computed in double, stored in float: the
     // table is read once per pixel per shooter and float halves its bandwidth
-    // (DESIGN.md speed notes); sums are accumulated in double.
+    // (docs/performance.md); sums are accumulated in double.
     const double step = 2.0 / m_n;
     const double dA = step * step;
     std::vector<double> top(static_cast<size_t>(h) * h);

@@ -10,7 +10,8 @@
 // exclusive in the half-open sense. Edge positions are computed in exact
 // integer arithmetic from the snapped endpoints, taken in a canonical order,
 // so two polygons sharing an edge split its pixels between them exactly: no
-// cracks and no pixel counted twice (DESIGN.md, "pixel-centre ties").
+// cracks and no pixel counted twice. (An inconsistent rule at pixel-centre ties
+// double-counts or drops whole rows: errors of several percent.)
 //
 // The span consumer is a template parameter: no virtual call and no
 // allocation per polygon or pixel.

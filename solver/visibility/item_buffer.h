@@ -3,7 +3,7 @@
 // of the element seen through it (§5.6, "scan-line filled with the element
 // identifier"). Two ids are reserved: nothing seen (the sky of an open scene)
 // and a blocker that receives nothing (a back-facing surface, Appendix A's
-// skipped nodes that DESIGN.md paints instead). Element e is stored as e + 2,
+// skipped nodes, which Regio paints: traversal.h). Element e is stored as e + 2,
 // so summing delta form factors per id needs no branch: slots 0 and 1 of the
 // result collect what escaped and what hit back faces.
 #include "solver/visibility/hemicube.h"

@@ -21,7 +21,7 @@
 //
 // Both share one per-shooter vertex cache: each vertex is transformed into the
 // shooter's frame and outcoded once per shooter, whatever number of elements
-// share it (DESIGN.md speed notes).
+// share it (docs/performance.md).
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
