@@ -347,13 +347,14 @@ TEST(SolveOutputs, RefusesABadPictureSize)
     EXPECT_NE(run.err.find("--size expects"), std::string::npos) << run.err;
 }
 
-// The README's table of report fields ("The report of one scene is one JSON
-// object") names every field a report has, and the keys of its objects.
-TEST(SolveCommand, TheReadmeDocumentsEveryFieldOfTheReport)
+// The guide's table of report fields ("The report of one scene is one JSON
+// object", docs/guide.md) names every field a report has, and the keys of its
+// objects.
+TEST(SolveCommand, TheGuideDocumentsEveryFieldOfTheReport)
 {
-    const std::string readme = readText(fs::path(REGIO_SOURCE_DIR) / "README.md");
+    const std::string readme = readText(fs::path(REGIO_SOURCE_DIR) / "docs" / "guide.md");
     const size_t start = readme.find("The report of one scene is one JSON object");
-    ASSERT_NE(start, std::string::npos) << "the README's report section moved";
+    ASSERT_NE(start, std::string::npos) << "the guide's report section moved";
     // Rows of the table: backticked names in the first column, and in the
     // whole row (an object's keys are listed beside it).
     std::map<std::string, std::set<std::string>> rows;
@@ -388,10 +389,10 @@ TEST(SolveCommand, TheReadmeDocumentsEveryFieldOfTheReport)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const json r = json::parse(readText(scratch / "r.json"));
     for (const auto& [key, value] : r.items()) {
-        ASSERT_TRUE(rows.count(key)) << "the README does not document '" << key << "'";
+        ASSERT_TRUE(rows.count(key)) << "the guide does not document '" << key << "'";
         if (value.is_object()) {
             for (const auto& [inner, unused] : value.items()) {
-                EXPECT_TRUE(rows[key].count(inner)) << "the README does not document '" << key << "." << inner << "'";
+                EXPECT_TRUE(rows[key].count(inner)) << "the guide does not document '" << key << "." << inner << "'";
             }
         }
     }
