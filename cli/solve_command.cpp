@@ -7,6 +7,7 @@
 #include "output/report.h"
 #include "solver/solver.h"
 #include "output/vertex_radiosity.h"
+#include "model/io/printable.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,8 +16,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -83,7 +82,7 @@ struct Options {
     bool iterationsGiven = false;
     bool convergenceGiven = false;
     std::optional<std::string> reportPath;
-    solver::OutputRequest output;
+    output::OutputRequest output;
     bool flat = false;
     bool quiet = false;
     std::vector<std::string> files;
@@ -136,7 +135,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
         }
         if (arg == "--srgb" || arg == "--ambient" || arg == "--flat") {
             if (arg == "--srgb")
-                options.output.display.toneMap.encoding.transfer = solver::Transfer::Srgb;
+                options.output.display.toneMap.encoding.transfer = output::Transfer::Srgb;
             else if (arg == "--ambient")
                 options.output.includeAmbient = true;
             else
@@ -179,20 +178,12 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
             options.solver.convergence = x;
             options.convergenceGiven = true;
         } else if (arg == "--visibility") {
-            if (value == "painter")
-                options.solver.visibility = solver::VisibilityMode::Painter;
-            else if (value == "zbuffer")
-                options.solver.visibility = solver::VisibilityMode::ZBuffer;
-            else
+            options.solver.visibility = model::parseVisibility(value);
+            if (!options.solver.visibility)
                 return usageError("--visibility expects painter or zbuffer, not '" + value + "'");
         } else if (arg == "--regions") {
-            if (value == "authored")
-                options.solver.regions = solver::RegionsMode::Authored;
-            else if (value == "none")
-                options.solver.regions = solver::RegionsMode::None;
-            else if (value == "auto")
-                options.solver.regions = solver::RegionsMode::Auto;
-            else
+            options.solver.regions = model::parseRegionsMode(value);
+            if (!options.solver.regions)
                 return usageError("--regions expects authored, none or auto, not '" + value + "'");
         } else if (arg == "--adaptive" || arg == "--anchoring") {
             const std::optional<bool> on = parseSwitch(value);
@@ -214,7 +205,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
                 return usageError("--report needs a file name");
             options.reportPath = value;
         } else if (arg == "--out") {
-            if (!solver::modelFormatForPath(value))
+            if (!output::modelFormatForPath(value))
                 return usageError("--out expects a .gltf, .glb, .ply or .obj file, not '" + value + "'");
             options.output.modelPath = value;
         } else if (arg == "--image") {
@@ -241,11 +232,11 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
                 return usageError("--gamma expects a number from 0.1 to 10, not '" + value + "'");
             options.output.display.toneMap.encoding.gamma = g;
         } else if (arg == "--false-colour") {
-            options.output.display.colours = solver::ColourMode::FalseColour;
+            options.output.display.colours = output::ColourMode::FalseColour;
             if (value == "log")
-                options.output.display.falseColour.scale = solver::FalseColourScale::Logarithmic;
+                options.output.display.falseColour.scale = output::FalseColourScale::Logarithmic;
             else if (value == "linear")
-                options.output.display.falseColour.scale = solver::FalseColourScale::Linear;
+                options.output.display.falseColour.scale = output::FalseColourScale::Linear;
             else
                 return usageError("--false-colour expects log or linear, not '" + value + "'");
         } else {
@@ -325,30 +316,16 @@ nlohmann::json unsolvedEntry(const SceneInput& input, const model::Diagnostics& 
     return entry;
 }
 
-// Writes beside the target and renames over it, so a half-written report
+// Standard output ("-"), or a file written atomically: a half-written report
 // never replaces a previous one.
-bool writeReport(const std::string& path, const nlohmann::json& report)
+bool writeReportTo(const std::string& path, const nlohmann::json& report)
 {
-    const std::string text = report.dump(2) + "\n";
     if (path == "-") {
-        std::cout << text << std::flush;
+        std::cout << report.dump(2) << "\n" << std::flush;
         return true;
     }
-    const std::string temp = path + ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.flush();
-        if (!out) {
-            std::cerr << "regio-solve solve: cannot write the report " << temp << "\n";
-            return false;
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        std::cerr << "regio-solve solve: cannot write the report " << path << ": " << ec.message() << "\n";
+    if (model::Check written = output::writeReport(path, report); !written) {
+        std::cerr << "regio-solve solve: " << model::printable(written.error().message) << "\n";
         return false;
     }
     return true;
@@ -361,13 +338,13 @@ bool writeSolutionOutputs(const Options& options, const model::Scene& scene, con
     if (options.output.modelPath.empty() && options.output.imagePath.empty())
         return true;
     const solver::SolutionSnapshot snapshot = s.snapshot();
-    const solver::LitMesh mesh = solver::litMeshForOutput(s.prepared(), snapshot.radiosity, !options.flat);
-    solver::OutputRequest request = options.output;
+    const output::LitMesh mesh = output::litMeshForOutput(s.prepared(), snapshot.radiosity, !options.flat);
+    output::OutputRequest request = options.output;
     request.camera = scene.camera;
     if (request.includeAmbient)
         request.display.toneMap.ambient = glm::vec3(snapshot.stats.ambient);
-    if (const std::optional<std::string> error = solver::writeOutputs(mesh, request)) {
-        std::cerr << "regio-solve solve: " << *error << "\n";
+    if (model::Check written = output::writeOutputs(mesh, request); !written) {
+        std::cerr << "regio-solve solve: " << model::printable(written.error().message) << "\n";
         return false;
     }
     return true;
@@ -377,7 +354,7 @@ bool writeSolutionOutputs(const Options& options, const model::Scene& scene, con
 // with adaptive.enabled = false (or --adaptive off) never does: say so
 // rather than let the user believe they had an effect.
 void warnAboutIdleAdaptiveOptions(const std::string& name, const Options& options,
-                                  const solver::EffectiveSettings& settings)
+                                  const model::SolverSettings& settings)
 {
     if (settings.adaptive.enabled)
         return;
@@ -427,18 +404,18 @@ int runSolve(int argc, char** argv)
             continue;
         }
 
-        solver::Solver::CreateResult built = solver::Solver::create(*input.scene, options.solver);
-        for (const model::Diagnostic& d : built.diagnostics)
+        model::Result<std::unique_ptr<solver::Solver>> built = solver::Solver::create(*input.scene, options.solver);
+        for (const model::Diagnostic& d : built.diagnostics())
             std::cerr << formatDiagnostic(displayName(file), d) << "\n";
-        if (!built.solver) {
+        if (!built) {
             exitCode = std::max(exitCode, kExitErrors);
-            reports.push_back(unsolvedEntry(input, built.diagnostics, "invalid"));
+            reports.push_back(unsolvedEntry(input, built.diagnostics(), "invalid"));
             if (!options.quiet)
                 summary << displayName(file) << ": not solved (the scene could not be prepared)\n";
             continue;
         }
 
-        solver::Solver& s = *built.solver;
+        solver::Solver& s = **built;
         warnAboutIdleAdaptiveOptions(displayName(file), options, s.settings());
         solver::StopReason stop;
         {
@@ -448,7 +425,7 @@ int runSolve(int argc, char** argv)
             progress.update(s.stats(), true);
         }
         const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        nlohmann::json report = solver::solveReport(file, s, total);
+        nlohmann::json report = output::solveReport(file, s, total);
         report["status"] = stop == solver::StopReason::Cancelled ? "interrupted" : "solved";
         reports.push_back(std::move(report));
 
@@ -473,7 +450,7 @@ int runSolve(int argc, char** argv)
 
     if (options.reportPath) {
         const nlohmann::json out = options.files.size() == 1 && reports.size() == 1 ? reports[0] : reports;
-        if (!writeReport(*options.reportPath, out))
+        if (!writeReportTo(*options.reportPath, out))
             exitCode = std::max(exitCode, kExitFailure);
     }
     if (g_interrupted) {

@@ -47,4 +47,12 @@ inline Diagnostic makeWarning(std::string message, std::string pointer = {},
     return Diagnostic{Severity::Warning, std::move(message), std::move(pointer), std::move(idPath)};
 }
 
+// The same diagnostic about another place of the file (a check written for
+// one value, reported where that value sits).
+inline Diagnostic withPointer(Diagnostic diagnostic, std::string pointer)
+{
+    diagnostic.pointer = std::move(pointer);
+    return diagnostic;
+}
+
 } // namespace regio::model

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -41,19 +41,19 @@ std::optional<ModelFormat> modelFormatForPath(const std::string& path)
     return std::nullopt;
 }
 
-std::optional<std::string> writeLitModel(const std::string& path, const LitMesh& mesh, const DisplayColours& colours)
+model::Check writeLitModel(const std::string& path, const LitMesh& mesh, const DisplayColours& colours)
 {
     const auto format = modelFormatForPath(path);
     if (!format)
-        return "cannot write " + path + ": unknown model format \"" + lowerExtension(path)
-               + "\" (use .gltf, .glb, .ply or .obj)";
+        return model::makeError("cannot write " + path + ": unknown model format \"" + lowerExtension(path)
+               + "\" (use .gltf, .glb, .ply or .obj)");
     switch (*format) {
     case ModelFormat::Gltf: return writeGltf(path, mesh, colours, GltfContainer::Separate);
     case ModelFormat::Glb: return writeGltf(path, mesh, colours, GltfContainer::Binary);
     case ModelFormat::Ply: return writePly(path, mesh, colours);
     case ModelFormat::Obj: return writeObj(path, mesh, colours);
     }
-    return "cannot write " + path + ": unknown model format";
+    return model::makeError("cannot write " + path + ": unknown model format");
 }
 
 PreparedColours prepareColours(const LitMesh& mesh, const DisplaySettings& settings)
@@ -69,32 +69,32 @@ PreparedColours prepareColours(const LitMesh& mesh, const DisplaySettings& setti
     return out;
 }
 
-std::optional<std::string> writeOutputs(const LitMesh& mesh, const OutputRequest& request)
+model::Check writeOutputs(const LitMesh& mesh, const OutputRequest& request)
 {
     if (!request.modelPath.empty() && !modelFormatForPath(request.modelPath))
-        return "cannot write " + request.modelPath + ": unknown model format \"" + lowerExtension(request.modelPath)
-               + "\" (use .gltf, .glb, .ply or .obj)";
+        return model::makeError("cannot write " + request.modelPath + ": unknown model format \"" + lowerExtension(request.modelPath)
+               + "\" (use .gltf, .glb, .ply or .obj)");
     if (!request.imagePath.empty()) {
         if (lowerExtension(request.imagePath) != ".png")
-            return "cannot write " + request.imagePath + ": images are written as PNG (use a .png name)";
+            return model::makeError("cannot write " + request.imagePath + ": images are written as PNG (use a .png name)");
         if (request.imageWidth < 1 || request.imageHeight < 1 || request.imageWidth > kMaxImageSide
             || request.imageHeight > kMaxImageSide)
-            return "cannot write " + request.imagePath + ": the image size must be between 1 and "
-                   + std::to_string(kMaxImageSide) + " pixels a side";
+            return model::makeError("cannot write " + request.imagePath + ": the image size must be between 1 and "
+                   + std::to_string(kMaxImageSide) + " pixels a side");
         if (request.camera) {
-            if (auto problem = checkCamera(*request.camera))
-                return "cannot write " + request.imagePath + ": " + *problem;
+            if (model::Check problem = checkCamera(*request.camera); !problem)
+                return model::makeError("cannot write " + request.imagePath + ": " + problem.error().message);
         }
     }
-    if (auto problem = checkLitMesh(mesh))
-        return "cannot write the solution: " + *problem;
+    if (model::Check problem = checkLitMesh(mesh); !problem)
+        return model::makeError("cannot write the solution: " + problem.error().message);
     if (request.modelPath.empty() && request.imagePath.empty())
-        return std::nullopt;
+        return model::success();
 
     const PreparedColours prepared = prepareColours(mesh, request.display);
     if (!request.modelPath.empty()) {
-        if (auto error = writeLitModel(request.modelPath, mesh, prepared.colours))
-            return error;
+        if (model::Check written = writeLitModel(request.modelPath, mesh, prepared.colours); !written)
+            return written;
     }
     if (!request.imagePath.empty()) {
         RenderOptions options;
@@ -106,19 +106,19 @@ std::optional<std::string> writeOutputs(const LitMesh& mesh, const OutputRequest
         Image image = renderImage(mesh, prepared.colours, camera, options);
         if (prepared.falseColour)
             drawLegend(image, prepared.falseColour->legend());
-        if (auto error = writePng(request.imagePath, image))
-            return error;
+        if (model::Check written = writePng(request.imagePath, image); !written)
+            return written;
     }
-    return std::nullopt;
+    return model::success();
 }
 
-std::optional<std::string> writeOutputs(const SolutionSnapshot& snapshot, const OutputRequest& request)
+model::Check writeOutputs(const SolutionSnapshot& snapshot, const OutputRequest& request)
 {
     LitMesh mesh;
     try {
         mesh = litMeshFromSolution(snapshot);
     } catch (const std::invalid_argument& e) {
-        return std::string("cannot write the solution: ") + e.what();
+        return model::makeError(std::string("cannot write the solution: ") + e.what());
     }
     if (!request.includeAmbient)
         return writeOutputs(mesh, request);
@@ -127,4 +127,4 @@ std::optional<std::string> writeOutputs(const SolutionSnapshot& snapshot, const 
     return writeOutputs(mesh, withAmbient);
 }
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -22,7 +22,7 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
 enum class ModelFormat { Gltf, Glb, Ply, Obj };
 
@@ -31,7 +31,7 @@ enum class ModelFormat { Gltf, Glb, Ply, Obj };
 std::optional<ModelFormat> modelFormatForPath(const std::string& path);
 
 // Writes the lit model in the format of the path's extension.
-std::optional<std::string> writeLitModel(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
+model::Check writeLitModel(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
 
 enum class ColourMode {
     ToneMapped, // exposure and gamma (tone_map.h)
@@ -69,10 +69,10 @@ struct OutputRequest {
 // Writes what the request asks for from a solver snapshot (flat element
 // values: litMeshFromSolution). Returns the first error, naming the file, or
 // nothing when every requested file was written.
-std::optional<std::string> writeOutputs(const SolutionSnapshot& snapshot, const OutputRequest& request);
+model::Check writeOutputs(const SolutionSnapshot& snapshot, const OutputRequest& request);
 
 // The same from a lit mesh (e.g. one with smooth vertex radiosity, §6).
 // `includeAmbient` is not used here: the ambient is toneMap.ambient.
-std::optional<std::string> writeOutputs(const LitMesh& mesh, const OutputRequest& request);
+model::Check writeOutputs(const LitMesh& mesh, const OutputRequest& request);
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -1,7 +1,7 @@
 #include "output/export_gltf.h"
 #include "output/export_support.h"
 
-#include "model/io/atomic_file.h"
+#include "model/io/file_io.h"
 
 #include <glm/common.hpp>
 #include <nlohmann/json.hpp>
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <limits>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -211,17 +211,17 @@ std::string gltfBufferPath(const std::string& gltfPath)
     return p.string();
 }
 
-std::optional<std::string> writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
+model::Check writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
                                      GltfContainer container)
 {
-    if (auto problem = checkWritable(path, mesh, colours))
-        return problem;
+    if (model::Check checked = checkWritable(path, mesh, colours); !checked)
+        return checked;
 
     if (container == GltfContainer::Binary) {
         const GltfParts parts = buildGltf(mesh, colours, "");
         const std::string bytes = glb(parts);
         if (bytes.size() > std::numeric_limits<uint32_t>::max())
-            return "cannot write " + path + ": the model is larger than the 4 GiB a .glb file can hold";
+            return model::makeError("cannot write " + path + ": the model is larger than the 4 GiB a .glb file can hold");
         return model::writeFileAtomically(path, bytes);
     }
 
@@ -229,10 +229,10 @@ std::optional<std::string> writeGltf(const std::string& path, const LitMesh& mes
     const std::string binName = std::filesystem::path(binPath).filename().string();
     const GltfParts parts = buildGltf(mesh, colours, uriEncode(binName));
     if (!parts.bin.empty()) {
-        if (auto error = model::writeFileAtomically(binPath, parts.bin))
-            return error;
+        if (model::Check written = model::writeFileAtomically(binPath, parts.bin); !written)
+            return written;
     }
     return model::writeFileAtomically(path, parts.document.dump(2) + "\n");
 }
 
-} // namespace regio::solver
+} // namespace regio::output

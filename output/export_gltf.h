@@ -20,7 +20,7 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
 enum class GltfContainer {
     Separate, // FILE.gltf + FILE.bin
@@ -28,10 +28,10 @@ enum class GltfContainer {
 };
 
 // Returns an error message naming the path, or nothing on success.
-std::optional<std::string> writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
+model::Check writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
                                      GltfContainer container);
 
 // The buffer file that writeGltf(path, ..., Separate) writes beside `path`.
 std::string gltfBufferPath(const std::string& gltfPath);
 
-} // namespace regio::solver
+} // namespace regio::output

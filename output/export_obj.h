@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
-std::optional<std::string> writeObj(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
+model::Check writeObj(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
 
-} // namespace regio::solver
+} // namespace regio::output

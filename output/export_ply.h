@@ -15,8 +15,8 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
-std::optional<std::string> writePly(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
+model::Check writePly(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
 
-} // namespace regio::solver
+} // namespace regio::output

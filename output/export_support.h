@@ -6,18 +6,18 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
 // Refuses a malformed mesh, or colours that are not one per vertex, with a
 // message that names the file about to be written.
-inline std::optional<std::string> checkWritable(const std::string& path, const LitMesh& mesh,
+inline model::Check checkWritable(const std::string& path, const LitMesh& mesh,
                                                 const DisplayColours& colours)
 {
-    if (auto problem = checkLitMesh(mesh))
-        return "cannot write " + path + ": " + *problem;
+    if (model::Check problem = checkLitMesh(mesh); !problem)
+        return model::makeError("cannot write " + path + ": " + problem.error().message);
     if (colours.linear.size() != mesh.vertexCount())
-        return "cannot write " + path + ": the colours do not match the mesh's vertices";
-    return std::nullopt;
+        return model::makeError("cannot write " + path + ": the colours do not match the mesh's vertices");
+    return model::success();
 }
 
 // Header comments of PLY and OBJ end at the line: keep descriptions on one.
@@ -29,4 +29,4 @@ inline std::string oneLine(std::string s)
     return s;
 }
 
-} // namespace regio::solver
+} // namespace regio::output

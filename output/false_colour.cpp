@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -175,4 +175,4 @@ DisplayColours falseColours(const LitMesh& mesh, const FalseColour& falseColour,
     return out;
 }
 
-} // namespace regio::solver
+} // namespace regio::output

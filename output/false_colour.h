@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace regio::solver {
+namespace regio::output {
 
 enum class FalseColourScale { Linear, Logarithmic };
 
@@ -76,4 +76,4 @@ private:
 DisplayColours falseColours(const LitMesh& mesh, const FalseColour& falseColour, const glm::vec3& ambient,
                             const DisplayEncoding& encoding);
 
-} // namespace regio::solver
+} // namespace regio::output

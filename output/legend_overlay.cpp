@@ -13,7 +13,7 @@
 #include <stb_easy_font.h>
 #pragma GCC diagnostic pop
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -132,4 +132,4 @@ LegendBox drawLegend(Image& image, const FalseColourLegend& legend)
     return box;
 }
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -6,7 +6,7 @@
 #include "output/false_colour.h"
 #include "output/software_render.h"
 
-namespace regio::solver {
+namespace regio::output {
 
 // The part of the image the legend covers (for tests and callers that want
 // to keep something else clear of it).
@@ -21,4 +21,4 @@ struct LegendBox {
 // readable legend (under 120 x 80 pixels) is left alone (empty box).
 LegendBox drawLegend(Image& image, const FalseColourLegend& legend);
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -5,7 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace regio::solver {
+namespace regio::output {
+
+using solver::Element;
+using solver::InputFace;
+using solver::Properties;
+using solver::SolutionMesh;
 
 namespace {
 
@@ -58,31 +63,31 @@ struct FlatBuilder {
 
 } // namespace
 
-std::optional<std::string> checkLitMesh(const LitMesh& mesh)
+model::Check checkLitMesh(const LitMesh& mesh)
 {
     const size_t n = mesh.positions.size();
     if (mesh.normals.size() != n || mesh.radiosity.size() != n || mesh.reflectance.size() != n)
-        return std::string("lit mesh: positions, normals, radiosity and reflectance differ in length");
+        return model::makeError("lit mesh: positions, normals, radiosity and reflectance differ in length");
     if (mesh.indices.size() % 3 != 0)
-        return std::string("lit mesh: the index count is not a multiple of 3");
+        return model::makeError("lit mesh: the index count is not a multiple of 3");
     if (mesh.triangleFace.size() != mesh.triangleCount())
-        return std::string("lit mesh: triangleFace does not have one entry per triangle");
+        return model::makeError("lit mesh: triangleFace does not have one entry per triangle");
     if (n > 0xFFFFFFFFu)
-        return std::string("lit mesh: too many vertices for 32-bit indices");
+        return model::makeError("lit mesh: too many vertices for 32-bit indices");
     for (uint32_t i : mesh.indices) {
         if (i >= n)
-            return "lit mesh: vertex index " + std::to_string(i) + " out of range";
+            return model::makeError("lit mesh: vertex index " + std::to_string(i) + " out of range");
     }
     for (int32_t f : mesh.triangleFace) {
         if (f < 0 || static_cast<size_t>(f) >= mesh.faceIds.size())
-            return "lit mesh: face index " + std::to_string(f) + " out of range";
+            return model::makeError("lit mesh: face index " + std::to_string(f) + " out of range");
     }
     for (size_t v = 0; v < n; ++v) {
         if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) || !finite(mesh.radiosity[v])
             || !finite(mesh.reflectance[v]))
-            return "lit mesh: vertex " + std::to_string(v) + " has a value that is not finite";
+            return model::makeError("lit mesh: vertex " + std::to_string(v) + " has a value that is not finite");
     }
-    return std::nullopt;
+    return model::success();
 }
 
 LitBounds litMeshBounds(const LitMesh& mesh)
@@ -142,4 +147,4 @@ LitMesh litMeshFromSolution(const SolutionSnapshot& snapshot)
     return std::move(b.mesh);
 }
 
-} // namespace regio::solver
+} // namespace regio::output

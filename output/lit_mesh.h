@@ -12,8 +12,9 @@
 //     with the element's radiosity (the element mesh as it is, no averaging);
 //   - the vertex radiosity of paper §6 (area-weighted averages at shared
 //     vertices within one plane), which yields the same type.
+#include "model/result.h"
 #include "solver/prepare/prepared_scene.h"
-#include "solver/solver.h"
+#include "solver/solution.h"
 
 #include <glm/vec3.hpp>
 
@@ -22,7 +23,12 @@
 #include <string>
 #include <vector>
 
-namespace regio::solver {
+namespace regio::output {
+
+using model::Rgb;
+using model::Vec3;
+using solver::PreparedScene;
+using solver::SolutionSnapshot;
 
 struct LitMesh {
     std::vector<glm::vec3> positions;   // metres
@@ -49,7 +55,7 @@ struct LitMesh {
 // Consistency of the arrays (equal per-vertex sizes, whole triangles, indices
 // in range, face indices in range, finite values). Writers refuse an
 // inconsistent mesh with this message instead of producing a broken file.
-std::optional<std::string> checkLitMesh(const LitMesh& mesh);
+model::Check checkLitMesh(const LitMesh& mesh);
 
 // Axis-aligned bounds of the positions (min > max when empty).
 struct LitBounds {
@@ -68,4 +74,4 @@ LitMesh litMeshFromSolution(const PreparedScene& scene, const std::vector<Rgb>& 
 // the editor and the batch command hold.
 LitMesh litMeshFromSolution(const SolutionSnapshot& snapshot);
 
-} // namespace regio::solver
+} // namespace regio::output

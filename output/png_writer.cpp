@@ -1,10 +1,10 @@
 #include "output/png_writer.h"
 
-#include "model/io/atomic_file.h"
+#include "model/io/file_io.h"
 
 #include <stb_image_write.h>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -28,14 +28,14 @@ std::string encodePng(const Image& image)
     return bytes;
 }
 
-std::optional<std::string> writePng(const std::string& path, const Image& image)
+model::Check writePng(const std::string& path, const Image& image)
 {
     if (image.width <= 0 || image.height <= 0)
-        return "cannot write " + path + ": the image is empty";
+        return model::makeError("cannot write " + path + ": the image is empty");
     const std::string bytes = encodePng(image);
     if (bytes.empty())
-        return "cannot write " + path + ": the PNG encoder failed";
+        return model::makeError("cannot write " + path + ": the PNG encoder failed");
     return model::writeFileAtomically(path, bytes);
 }
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -6,11 +6,11 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
 // The PNG file's bytes (8-bit RGB, no interlace); empty for an empty image.
 std::string encodePng(const Image& image);
 
-std::optional<std::string> writePng(const std::string& path, const Image& image);
+model::Check writePng(const std::string& path, const Image& image);
 
-} // namespace regio::solver
+} // namespace regio::output

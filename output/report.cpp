@@ -1,6 +1,14 @@
 #include "output/report.h"
 
-namespace regio::solver {
+#include "model/io/file_io.h"
+
+namespace regio::output {
+
+using solver::FaceResult;
+using solver::Hemicube;
+using solver::PreparedScene;
+using solver::Region;
+using solver::SolverStats;
 
 nlohmann::json rgbJson(const Rgb& c) { return nlohmann::json::array({c.r, c.g, c.b}); }
 
@@ -8,13 +16,13 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
 {
     using nlohmann::json;
     const SolverStats stats = solver.stats();
-    const EffectiveSettings& settings = solver.settings();
+    const model::SolverSettings& settings = solver.settings();
     const PreparedScene& prepared = solver.prepared();
 
     json report;
     report["scene"] = sceneName;
-    report["visibility"] = visibilityModeName(settings.visibility);
-    report["regions"] = regionsModeName(settings.regions);
+    report["visibility"] = model::visibilityName(settings.visibility);
+    report["regions"] = model::regionsModeName(settings.regions);
     report["hemicube"] = Hemicube(settings.hemicube).resolution();
     report["patchSize"] = settings.patchSize;
     report["elementsPerPatch"] = settings.elementsPerPatch;
@@ -68,4 +76,9 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     return report;
 }
 
-} // namespace regio::solver
+model::Check writeReport(const std::string& path, const nlohmann::json& report)
+{
+    return model::writeFileAtomically(path, report.dump(2) + "\n");
+}
+
+} // namespace regio::output

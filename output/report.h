@@ -3,6 +3,7 @@
 // with which settings, how long it took, where the energy went (watts per
 // channel: W/m^2 x m^2), what the scene preparation made of the regions, and
 // the area-weighted mean radiosity of every input face, keyed by its file id.
+#include "model/result.h"
 #include "solver/solver.h"
 
 #include <nlohmann/json.hpp>
@@ -10,9 +11,10 @@
 #include <optional>
 #include <string>
 
-namespace regio::solver {
+namespace regio::output {
 
-using model::regionsModeName;
+using model::Rgb;
+using solver::Solver;
 
 // One scene's report. `totalSeconds` is the caller's wall time from reading
 // the file to the end of the solve; empty = preprocess + shoot.
@@ -21,4 +23,8 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver,
 
 nlohmann::json rgbJson(const Rgb& c);
 
-} // namespace regio::solver
+// Writes a report (one object, or an array of them) as indented JSON,
+// atomically (model/io/file_io.h).
+model::Check writeReport(const std::string& path, const nlohmann::json& report);
+
+} // namespace regio::output

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -41,7 +41,7 @@ struct View {
 
 std::optional<View> makeView(const model::Camera& camera, int width, int height)
 {
-    if (checkCamera(camera) || width <= 0 || height <= 0)
+    if (!checkCamera(camera) || width <= 0 || height <= 0)
         return std::nullopt;
     View v;
     v.eye = camera.position;
@@ -162,16 +162,16 @@ void rasterise(Target& target, ScreenVertex v0, ScreenVertex v1, ScreenVertex v2
 
 } // namespace
 
-std::optional<std::string> checkCamera(const model::Camera& camera)
+model::Check checkCamera(const model::Camera& camera)
 {
     if (!(camera.fovY > 0.0 && camera.fovY < 180.0))
-        return std::string("the camera's field of view must be between 0 and 180 degrees");
+        return model::makeError("the camera's field of view must be between 0 and 180 degrees");
     const glm::dvec3 forward = camera.target - camera.position;
     if (!(glm::length(forward) > 1e-12))
-        return std::string("the camera's position and target coincide");
+        return model::makeError("the camera's position and target coincide");
     if (!(glm::length(glm::cross(glm::normalize(forward), camera.up)) > 1e-9))
-        return std::string("the camera's up direction is parallel to its view direction");
-    return std::nullopt;
+        return model::makeError("the camera's up direction is parallel to its view direction");
+    return model::success();
 }
 
 model::Camera frameCamera(const LitBounds& bounds, double fovY, double aspect)
@@ -222,7 +222,7 @@ Image renderImage(const LitMesh& mesh, const DisplayColours& colours, const mode
     target.invDepth.assign(samples, 0.0f);
 
     const auto view = makeView(camera, target.width, target.height);
-    const bool usable = view && !checkLitMesh(mesh) && colours.linear.size() == mesh.vertexCount();
+    const bool usable = view && checkLitMesh(mesh) && colours.linear.size() == mesh.vertexCount();
     if (usable) {
         const double nearPlane = std::max(options.nearPlane, 1e-9);
         for (size_t t = 0; t < mesh.triangleCount(); ++t) {
@@ -274,4 +274,4 @@ Image renderImage(const LitMesh& mesh, const DisplayColours& colours, const mode
     return image;
 }
 
-} // namespace regio::solver
+} // namespace regio::output

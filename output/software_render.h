@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace regio::solver {
+namespace regio::output {
 
 struct Image {
     int width = 0;
@@ -57,7 +57,7 @@ struct RenderOptions {
 
 // Why a camera cannot take a picture (eye on the target, up along the view,
 // field of view outside (0, 180) degrees), or nothing.
-std::optional<std::string> checkCamera(const model::Camera& camera);
+model::Check checkCamera(const model::Camera& camera);
 
 // A camera that shows the whole of `bounds`: looking at the centre from the
 // front-right and slightly above, for models without a scene camera.
@@ -75,4 +75,4 @@ std::optional<glm::dvec3> projectToImage(const model::Camera& camera, int width,
 Image renderImage(const LitMesh& mesh, const DisplayColours& colours, const model::Camera& camera,
                   const RenderOptions& options = {});
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <utility>
 
-namespace regio::solver {
+namespace regio::output {
 
 namespace {
 
@@ -178,4 +178,4 @@ std::array<uint8_t, 3> toBytes(const glm::vec3& encoded)
     return {toByte(encoded.x), toByte(encoded.y), toByte(encoded.z)};
 }
 
-} // namespace regio::solver
+} // namespace regio::output

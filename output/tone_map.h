@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace regio::solver {
+namespace regio::output {
 
 // Rec. 709 luminance of a linear colour (the weights shooting.h uses too).
 float displayLuminance(const glm::vec3& c);
@@ -99,4 +99,4 @@ DisplayColours toneMappedColours(const LitMesh& mesh, const ToneMap& toneMap);
 uint8_t toByte(float encoded);
 std::array<uint8_t, 3> toBytes(const glm::vec3& encoded);
 
-} // namespace regio::solver
+} // namespace regio::output

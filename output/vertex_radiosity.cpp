@@ -10,7 +10,12 @@
 #include <utility>
 #include <vector>
 
-namespace regio::solver {
+namespace regio::output {
+
+using model::Plane;
+using solver::Element;
+using solver::InputFace;
+using solver::Properties;
 
 namespace {
 
@@ -367,4 +372,4 @@ LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elemen
     return litMeshFromSolution(scene, std::vector<Rgb>(elementRadiosity.begin(), elementRadiosity.end()));
 }
 
-} // namespace regio::solver
+} // namespace regio::output

@@ -21,7 +21,7 @@
 
 #include <span>
 
-namespace regio::solver {
+namespace regio::output {
 
 struct SmoothingOptions {
     // Values on a group's boundary. Off (the default): the same area-weighted
@@ -56,4 +56,4 @@ LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRa
 // with the default options, or the flat element mesh (litMeshFromSolution).
 LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth);
 
-} // namespace regio::solver
+} // namespace regio::output

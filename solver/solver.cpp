@@ -50,51 +50,22 @@ const char* stopReasonName(StopReason reason)
     return "none";
 }
 
-Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptions& options)
+model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene, const SolverOptions& options)
 {
     const auto start = Clock::now();
-    CreateResult result;
-    EffectiveSettings s;
-    s.hemicube = options.hemicube.value_or(scene.solver.hemicube);
-    s.maxIterations = options.maxIterations.value_or(scene.solver.maxIterations);
-    s.convergence = options.convergence.value_or(scene.solver.convergence);
-    s.patchSize = options.patchSize.value_or(scene.solver.patchSize);
-    s.elementsPerPatch = options.elementsPerPatch.value_or(scene.solver.elementsPerPatch);
-    s.visibility = options.visibility.value_or(scene.solver.visibility == model::Visibility::ZBuffer
-                                                   ? VisibilityMode::ZBuffer
-                                                   : VisibilityMode::Painter);
-    s.regions = options.regions.value_or(scene.solver.regions);
-    s.adaptive = scene.solver.adaptive;
-    s.adaptive.enabled = options.adaptive.value_or(s.adaptive.enabled);
-    s.adaptive.threshold = options.adaptiveThreshold.value_or(s.adaptive.threshold);
-    s.adaptive.minEdge = options.adaptiveMinEdge.value_or(s.adaptive.minEdge);
-    s.adaptive.anchoring = options.adaptiveAnchoring.value_or(s.adaptive.anchoring);
-    if (s.adaptive.enabled && !(std::isfinite(s.adaptive.minEdge) && s.adaptive.minEdge > 0.0)) {
-        result.diagnostics.push_back(model::makeError("the adaptive minEdge must be a positive length", "/solver/adaptive/minEdge"));
-        return result;
-    }
-    if (s.adaptive.enabled && !(std::isfinite(s.adaptive.threshold) && s.adaptive.threshold >= 0.0)) {
-        result.diagnostics.push_back(model::makeError("the adaptive threshold must be a non-negative number", "/solver/adaptive/threshold"));
-        return result;
-    }
-    if (s.hemicube < 2) {
-        result.diagnostics.push_back(model::makeError("the hemicube resolution must be at least 2", "/solver/hemicube"));
-        return result;
-    }
+    const model::SolverSettings s = resolveSettings(scene.solver, options);
+    if (model::Check runnable = checkRunnable(s); !runnable)
+        return runnable.error();
 
-    PrepareOptions prep;
-    prep.regions = s.regions;
-    prep.autoRegionPatchThreshold = options.autoRegionPatchThreshold;
-    prep.patchSize = s.patchSize;
-    prep.elementsPerPatch = s.elementsPerPatch;
-    PrepareResult prepared = prepareScene(scene, prep);
-    result.diagnostics = std::move(prepared.diagnostics);
-    if (!prepared.scene)
-        return result;
+    model::Result<PreparedScene> prepared =
+        prepareScene(scene, prepareOptionsFor(s, options.autoRegionPatchThreshold));
+    if (!prepared)
+        return model::Result<std::unique_ptr<Solver>>::failureOf(prepared);
 
     std::unique_ptr<Solver> solver(new Solver());
     solver->m_settings = s;
-    solver->m_prepared = std::move(*prepared.scene);
+    model::Diagnostics warnings = prepared.takeDiagnostics();
+    solver->m_prepared = std::move(*prepared);
     if (s.adaptive.enabled)
         solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
     solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility);
@@ -104,8 +75,7 @@ Solver::CreateResult Solver::create(const model::Scene& scene, const SolverOptio
         std::lock_guard<std::mutex> lock(solver->m_mutex);
         solver->updateStatsLocked();
     }
-    result.solver = std::move(solver);
-    return result;
+    return {std::move(solver), std::move(warnings)};
 }
 
 Solver::~Solver() = default;

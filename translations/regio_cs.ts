@@ -55,6 +55,22 @@
         <source>warning: %1</source>
         <translation>varování: %1</translation>
     </message>
+    <message>
+        <source>Adaptive subdivision: threshold %1, shortest edge %2 m, anchoring %3</source>
+        <translation>Adaptivní dělení: práh %1, nejkratší hrana %2 m, kotvení %3</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>Adaptive subdivision: off</source>
+        <translation>Adaptivní dělení: vypnuto</translation>
+    </message>
 </context>
 <context>
     <name>TransformGizmo</name>
@@ -258,10 +274,6 @@
     <message>
         <source>Autosave to %1 failed: %2</source>
         <translation>Automatické uložení do %1 selhalo: %2</translation>
-    </message>
-    <message>
-        <source>unreadable</source>
-        <translation>nečitelný</translation>
     </message>
 </context>
 <context>
@@ -873,6 +885,13 @@
     <message>
         <source>Patch %1 of face %2, %3 x %3 pixels: %4 elements seen; %5 % of the form factor escapes, %6 % falls on back faces (black: nothing, grey: back faces).</source>
         <translation>Ploška %1 stěny %2, %3 × %3 pixelů: viditelných prvků %4; %5 % konfiguračního faktoru uniká, %6 % dopadá na odvrácené stěny (černá: nic, šedá: odvrácené stěny).</translation>
+    </message>
+</context>
+<context>
+    <name>regio::editor::ImageFile</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>nelze zapsat %1: %2</translation>
     </message>
 </context>
 <context>
@@ -1640,10 +1659,6 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>the viewport could not be read</source>
         <translation>pohled nelze přečíst</translation>
-    </message>
-    <message>
-        <source>cannot write %1</source>
-        <translation>nelze zapsat %1</translation>
     </message>
     <message>
         <source>Export Lit Model</source>
@@ -2439,10 +2454,6 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>the viewport&apos;s framebuffer could not be read</source>
         <translation>obsah pohledu nelze přečíst</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>nelze zapsat %1: %2</translation>
     </message>
 </context>
 <context>

@@ -2,13 +2,13 @@
 
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
+#include "model/io/file_io.h"
 #include "model/io/scene_json.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUndoStack>
 #include <QUuid>
@@ -80,15 +80,11 @@ bool Autosave::saveNow()
         discard();
         return true;
     }
-    QSaveFile scene(m_scenePath);
-    const std::string text = model::serializeScene(m_document->scene());
-    bool ok = scene.open(QIODevice::WriteOnly) &&
-              scene.write(text.data(), qint64(text.size())) == qint64(text.size()) && scene.commit();
-    QSaveFile origin(m_originPath);
-    ok = ok && origin.open(QIODevice::WriteOnly) && origin.write(m_document->filePath().toUtf8()) >= 0 &&
-         origin.commit();
-    if (!ok) {
-        emit saveFailed(tr("Autosave to %1 failed: %2").arg(m_scenePath, scene.errorString()));
+    model::Check written = model::writeFileAtomically(toStd(m_scenePath), model::serializeScene(m_document->scene()));
+    if (written)
+        written = model::writeFileAtomically(toStd(m_originPath), m_document->filePath().toUtf8().toStdString());
+    if (!written) {
+        emit saveFailed(tr("Autosave to %1 failed: %2").arg(m_scenePath, toQString(written.error().message)));
         return false;
     }
     m_dirty = false;
@@ -126,13 +122,13 @@ QList<RecoveryFile> Autosave::findOrphans(const QString& directory)
 
 bool Autosave::restore(const RecoveryFile& file, SceneDocument* document, QString* error)
 {
-    model::SceneReadResult read = model::loadSceneFile(toStd(file.scenePath));
-    if (!read.scene || model::hasErrors(read.diagnostics)) {
+    model::Result<model::Scene> read = model::loadSceneFile(toStd(file.scenePath));
+    if (!read) {
         if (error)
-            *error = read.diagnostics.empty() ? tr("unreadable") : toQString(read.diagnostics.front().message);
+            *error = toQString(read.error().message);
         return false;
     }
-    document->reset(std::move(*read.scene), file.originalPath, true);
+    document->reset(std::move(*read), file.originalPath, true);
     remove(file);
     return true;
 }

@@ -1,5 +1,7 @@
 #include "editor/app/screenshot.h"
 
+#include "editor/app/image_file.h"
+
 #include "editor/app/main_window.h"
 #include "editor/viewport/viewport.h"
 
@@ -63,9 +65,8 @@ void ScreenshotRunner::grabNow()
     }
     const QFileInfo info(m_path);
     QDir().mkpath(info.absolutePath());
-    QImageWriter writer(m_path);
-    if (!writer.write(pixmap.toImage())) {
-        finish(2, tr("cannot write %1: %2").arg(QDir::toNativeSeparators(m_path), writer.errorString()));
+    if (const std::optional<QString> error = writeImageFile(m_path, pixmap.toImage())) {
+        finish(2, *error);
         return;
     }
     finish(0, {});

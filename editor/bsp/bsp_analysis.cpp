@@ -36,14 +36,14 @@ BspAnalysis analyseBsp(model::Scene sceneCopy)
     const model::Scene& scene = *out.scene;
     // The figures come from the very preparation whose trees are drawn, so
     // the tree view, the fragment layer and the numbers never disagree.
-    const solver::BspFiguresOptions authoredOptions{solver::RegionsMode::Authored};
-    solver::PrepareResult prepared = solver::prepareScene(scene, solver::bspStageOptions(authoredOptions));
-    out.diagnostics = std::move(prepared.diagnostics);
-    if (prepared.scene) {
-        out.authored = solver::bspFiguresOf(*prepared.scene, solver::RegionsMode::Authored);
-        out.prepared = std::make_shared<const solver::PreparedScene>(std::move(*prepared.scene));
+    model::Result<solver::PreparedScene> prepared = solver::prepareBsp(scene);
+    out.diagnostics = prepared.takeDiagnostics();
+    if (prepared) {
+        out.authored = solver::bspFiguresOf(*prepared, solver::RegionsMode::Authored);
+        out.prepared = std::make_shared<const solver::PreparedScene>(std::move(*prepared));
     }
-    out.baseline = solver::computeBspFigures(scene, {solver::RegionsMode::None}).figures;
+    if (model::Result<solver::SceneBspFigures> baseline = solver::computeBspFigures(scene, {solver::RegionsMode::None}))
+        out.baseline = std::move(*baseline);
     out.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

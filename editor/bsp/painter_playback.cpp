@@ -4,6 +4,7 @@
 #include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "solver/prepare/prepare.h"
+#include "solver/settings.h"
 
 #include <glm/geometric.hpp>
 
@@ -42,13 +43,10 @@ std::shared_ptr<const solver::PreparedScene> PainterPlayback::prepared()
 {
     if (!m_preparedValid) {
         const model::Scene& scene = m_document->scene();
-        // The solver's own options (solver.cpp): the scene's settings.
-        solver::PrepareOptions options;
-        options.regions = scene.solver.regions;
-        options.patchSize = scene.solver.patchSize;
-        options.elementsPerPatch = scene.solver.elementsPerPatch;
-        solver::PrepareResult result = solver::prepareScene(scene, options);
-        m_prepared = result.scene ? std::make_shared<const solver::PreparedScene>(std::move(*result.scene)) : nullptr;
+        // The preparation the solver runs (Solver::create): the scene's settings.
+        model::Result<solver::PreparedScene> result =
+            solver::prepareScene(scene, solver::prepareOptionsFor(solver::resolveSettings(scene.solver)));
+        m_prepared = result ? std::make_shared<const solver::PreparedScene>(std::move(*result)) : nullptr;
         m_preparedValid = true;
     }
     return m_prepared;

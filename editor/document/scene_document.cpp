@@ -67,11 +67,11 @@ void SceneDocument::reset(model::Scene scene, const QString& filePath, bool modi
 
 bool SceneDocument::open(const QString& path, model::Diagnostics& diagnostics)
 {
-    model::SceneReadResult read = model::loadSceneFile(toStd(path));
-    diagnostics = std::move(read.diagnostics);
-    if (!read.scene || model::hasErrors(diagnostics))
+    model::Result<model::Scene> read = model::loadSceneFile(toStd(path));
+    diagnostics = read.takeDiagnostics();
+    if (!read)
         return false;
-    reset(std::move(*read.scene), path);
+    reset(std::move(*read), path);
     return true;
 }
 
@@ -86,9 +86,9 @@ bool SceneDocument::revert(model::Diagnostics& diagnostics)
 
 bool SceneDocument::save(const QString& path, QString* error)
 {
-    if (auto failure = model::saveSceneFile(m_scene, toStd(path))) {
+    if (model::Check saved = model::saveSceneFile(m_scene, toStd(path)); !saved) {
         if (error)
-            *error = toQString(failure->message);
+            *error = toQString(saved.error().message);
         return false;
     }
     setFilePath(path);

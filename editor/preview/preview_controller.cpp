@@ -1,5 +1,7 @@
 #include "editor/preview/preview_controller.h"
 
+#include "editor/app/image_file.h"
+
 #include "editor/preview/convergence_plot.h"
 #include "editor/preview/hemicube_dialog.h"
 #include "editor/preview/preview_export.h"
@@ -421,9 +423,7 @@ std::optional<QString> PreviewController::exportViewportImage(const QString& pat
     const QImage image = m_viewport->grabFramebuffer();
     if (image.isNull())
         return tr("the viewport could not be read");
-    if (!image.save(path))
-        return tr("cannot write %1").arg(path);
-    return std::nullopt;
+    return writeImageFile(path, image);
 }
 
 std::optional<QString> PreviewController::exportForBatch(const QString& path, QString* command) const

@@ -9,15 +9,15 @@
 
 namespace regio::editor {
 
-solver::DisplaySettings displaySettings(const PreviewDisplay& display, const PreviewFrame& frame)
+output::DisplaySettings displaySettings(const PreviewDisplay& display, const PreviewFrame& frame)
 {
-    solver::DisplaySettings s;
+    output::DisplaySettings s;
     s.toneMap.exposure = display.exposure;
-    s.toneMap.encoding.transfer = solver::Transfer::Gamma;
+    s.toneMap.encoding.transfer = output::Transfer::Gamma;
     s.toneMap.encoding.gamma = display.gamma;
     if (display.ambient)
         s.toneMap.ambient = glm::vec3(frame.snapshot.stats.ambient);
-    s.colours = display.falseColour ? solver::ColourMode::FalseColour : solver::ColourMode::ToneMapped;
+    s.colours = display.falseColour ? output::ColourMode::FalseColour : output::ColourMode::ToneMapped;
     s.falseColour.scale = display.falseColourScale;
     return s;
 }
@@ -42,13 +42,13 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
     out.solution.order = 0;
     if (!frame.lit || frame.lit->empty())
         return out;
-    const solver::LitMesh& lit = *frame.lit;
-    const solver::DisplaySettings settings = displaySettings(display, frame);
-    const solver::PreparedColours prepared = solver::prepareColours(lit, settings);
+    const output::LitMesh& lit = *frame.lit;
+    const output::DisplaySettings settings = displaySettings(display, frame);
+    const output::PreparedColours prepared = output::prepareColours(lit, settings);
     if (prepared.falseColour)
         out.legend = prepared.falseColour->legend();
     else
-        out.whiteReference = solver::automaticWhiteReference(lit, settings.toneMap.ambient);
+        out.whiteReference = output::automaticWhiteReference(lit, settings.toneMap.ambient);
 
     std::vector<glm::vec4> colours(lit.vertexCount());
     for (size_t v = 0; v < colours.size(); ++v)

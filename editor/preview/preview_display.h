@@ -20,7 +20,7 @@ struct PreviewDisplay {
     double exposure = 0.0; // stops
     double gamma = 2.2;
     bool falseColour = false;
-    solver::FalseColourScale falseColourScale = solver::FalseColourScale::Logarithmic;
+    output::FalseColourScale falseColourScale = output::FalseColourScale::Logarithmic;
     bool ambient = true;   // add the ambient term of progressive refinement (Cohen et al. 1988)
     bool showMesh = false; // element mesh overlay
 
@@ -47,12 +47,12 @@ struct PreviewLayers {
     std::optional<ViewportLayer> mesh; // when showMesh is on
     int elementEdges = 0;              // line segments of the mesh layer: element edges
     int anchoringEdges = 0;            // and anchoring edges (see MeshOverlayColours)
-    std::optional<solver::FalseColourLegend> legend;
+    std::optional<output::FalseColourLegend> legend;
     double whiteReference = 1.0;       // W/m^2 shown white at exposure 0 (tone mapping)
 };
 
 // The display settings the exports share with the viewport.
-solver::DisplaySettings displaySettings(const PreviewDisplay& display, const PreviewFrame& frame);
+output::DisplaySettings displaySettings(const PreviewDisplay& display, const PreviewFrame& frame);
 
 PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay& display);
 

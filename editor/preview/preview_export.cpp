@@ -13,13 +13,13 @@ std::optional<QString> writePreviewModel(const QString& path, const PreviewFrame
 {
     if (!frame.lit || frame.lit->empty())
         return QCoreApplication::translate("regio::editor::PreviewExport", "there is no solution to export");
-    if (!solver::modelFormatForPath(path.toStdString()))
+    if (!output::modelFormatForPath(path.toStdString()))
         return QCoreApplication::translate("regio::editor::PreviewExport",
                                            "%1: unknown model format (use .gltf, .glb, .ply or .obj)")
             .arg(path);
-    const solver::PreparedColours colours = solver::prepareColours(*frame.lit, displaySettings(display, frame));
-    if (auto error = solver::writeLitModel(path.toStdString(), *frame.lit, colours.colours))
-        return QString::fromStdString(*error);
+    const output::PreparedColours colours = output::prepareColours(*frame.lit, displaySettings(display, frame));
+    if (model::Check written = output::writeLitModel(path.toStdString(), *frame.lit, colours.colours); !written)
+        return QString::fromStdString(written.error().message);
     return std::nullopt;
 }
 
@@ -32,8 +32,8 @@ model::Scene batchScene(const model::Scene& scene)
 
 std::optional<QString> writeBatchScene(const QString& path, const model::Scene& scene)
 {
-    if (auto d = model::saveSceneFile(batchScene(scene), path.toStdString()))
-        return QString::fromStdString(d->message);
+    if (model::Check saved = model::saveSceneFile(batchScene(scene), path.toStdString()); !saved)
+        return QString::fromStdString(saved.error().message);
     return std::nullopt;
 }
 
@@ -64,7 +64,7 @@ QStringList batchArguments(const QString& scenePath, const PreviewDisplay& displ
                      QStringLiteral("--gamma"), QString::number(display.gamma)};
     if (display.falseColour)
         args << QStringLiteral("--false-colour")
-             << (display.falseColourScale == solver::FalseColourScale::Linear ? QStringLiteral("linear")
+             << (display.falseColourScale == output::FalseColourScale::Linear ? QStringLiteral("linear")
                                                                               : QStringLiteral("log"));
     return args;
 }

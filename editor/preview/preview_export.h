@@ -13,7 +13,7 @@
 
 namespace regio::editor {
 
-// glTF (.gltf/.glb), PLY or OBJ by the extension (solver::writeLitModel).
+// glTF (.gltf/.glb), PLY or OBJ by the extension (output::writeLitModel).
 std::optional<QString> writePreviewModel(const QString& path, const PreviewFrame& frame, const PreviewDisplay& display);
 
 // The scene as it is, with the final preset's settings (what a batch machine

@@ -151,16 +151,16 @@ void PreviewSession::publish(bool running)
         const double elements = double(prepared.elements.size());
         if (!running || m_smoothSecondsPerElement * elements < kSmoothBudgetSeconds) {
             const auto smoothStart = std::chrono::steady_clock::now();
-            frame->lit = std::make_shared<solver::LitMesh>(solver::smoothLitMesh(prepared, radiosity));
+            frame->lit = std::make_shared<output::LitMesh>(output::smoothLitMesh(prepared, radiosity));
             if (elements > 0.0)
                 m_smoothSecondsPerElement = secondsSince(smoothStart) / elements;
         } else {
-            frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(prepared, radiosity));
+            frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(prepared, radiosity));
             frame->smooth = false;
         }
     } else {
         frame->smooth = false;
-        frame->lit = std::make_shared<solver::LitMesh>(solver::litMeshFromSolution(frame->snapshot));
+        frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(frame->snapshot));
     }
     frame->buildSeconds = secondsSince(begin);
     {
@@ -217,17 +217,17 @@ void PreviewSession::serveHemicube()
 
 void PreviewSession::work()
 {
-    solver::Solver::CreateResult built = solver::Solver::create(m_config.scene, m_config.options);
+    model::Result<std::unique_ptr<solver::Solver>> built = solver::Solver::create(m_config.scene, m_config.options);
     {
         std::lock_guard<std::mutex> lock(m_mutex);
-        m_diagnostics = built.diagnostics;
+        m_diagnostics = built.diagnostics();
     }
-    if (!built.solver) {
+    if (!built) {
         m_exited.store(true);
         m_notify(SessionEvent::Failed);
         return;
     }
-    m_solver = std::move(built.solver);
+    m_solver = std::move(*built);
     // The scene copy is no longer needed: the solver works on its own PreparedScene.
     m_config.scene = model::Scene{};
     publish(!m_config.startPaused);

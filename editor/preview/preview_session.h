@@ -46,9 +46,9 @@ struct PreviewFrame {
     std::vector<int> elementPatch;       // per element
     std::vector<int> elementRegion;      // per element, index into regionIds
     std::vector<std::string> regionIds;
-    std::shared_ptr<const solver::LitMesh> lit; // smooth vertex radiosity (§6)
+    std::shared_ptr<const output::LitMesh> lit; // smooth vertex radiosity (§6)
     std::vector<ConvergencePoint> history;
-    solver::EffectiveSettings settings;
+    model::SolverSettings settings;
     double elapsedSeconds = 0.0; // since the session started (preparation included)
     bool running = false;        // false: paused, stopped or finished when it was made
     double buildSeconds = 0.0;   // making this frame on the worker (snapshot, smooth lit mesh)

@@ -126,8 +126,8 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     displayForm->addRow(m_ambient);
     m_falseColour = new QCheckBox(tr("False colour"));
     m_falseScale = new QComboBox;
-    m_falseScale->addItem(tr("Logarithmic"), int(solver::FalseColourScale::Logarithmic));
-    m_falseScale->addItem(tr("Linear"), int(solver::FalseColourScale::Linear));
+    m_falseScale->addItem(tr("Logarithmic"), int(output::FalseColourScale::Logarithmic));
+    m_falseScale->addItem(tr("Linear"), int(output::FalseColourScale::Linear));
     auto* falseRow = new QHBoxLayout;
     falseRow->addWidget(m_falseColour);
     falseRow->addWidget(m_falseScale, 1);
@@ -277,7 +277,7 @@ void SolverDock::displayEdited()
     d.gamma = m_gamma->value();
     d.ambient = m_ambient->isChecked();
     d.falseColour = m_falseColour->isChecked();
-    d.falseColourScale = solver::FalseColourScale(m_falseScale->currentData().toInt());
+    d.falseColourScale = output::FalseColourScale(m_falseScale->currentData().toInt());
     d.showMesh = m_mesh->isChecked();
     m_falseScale->setEnabled(d.falseColour);
     if (d == m_display)
@@ -286,7 +286,7 @@ void SolverDock::displayEdited()
     emit displayChanged(d);
 }
 
-void SolverDock::setLegend(const std::optional<solver::FalseColourLegend>& legend, double whiteReference)
+void SolverDock::setLegend(const std::optional<output::FalseColourLegend>& legend, double whiteReference)
 {
     m_legend->setLegend(legend);
     m_legend->setVisible(legend.has_value());
@@ -308,7 +308,7 @@ LegendWidget::LegendWidget(QWidget* parent) : QWidget(parent)
     setVisible(false);
 }
 
-void LegendWidget::setLegend(const std::optional<solver::FalseColourLegend>& legend)
+void LegendWidget::setLegend(const std::optional<output::FalseColourLegend>& legend)
 {
     m_legend = legend;
     update();
@@ -323,14 +323,14 @@ void LegendWidget::paintEvent(QPaintEvent*)
     QPainter painter(this);
     const QRect bar(8, 4, width() - 16, 16);
     for (int x = 0; x < bar.width(); ++x) {
-        const glm::vec3 c = solver::FalseColour::ramp(double(x) / std::max(1, bar.width() - 1));
+        const glm::vec3 c = output::FalseColour::ramp(double(x) / std::max(1, bar.width() - 1));
         painter.setPen(QColor::fromRgbF(c.r, c.g, c.b));
         painter.drawLine(bar.left() + x, bar.top(), bar.left() + x, bar.bottom());
     }
     painter.setPen(palette().color(QPalette::WindowText));
     painter.drawRect(bar.adjusted(0, 0, -1, -1));
     const QFontMetrics metrics(font());
-    for (const solver::LegendTick& tick : m_legend->ticks) {
+    for (const output::LegendTick& tick : m_legend->ticks) {
         const int x = bar.left() + int(tick.position * (bar.width() - 1));
         painter.drawLine(x, bar.bottom(), x, bar.bottom() + 4);
         const QString label = QString::fromStdString(tick.label);

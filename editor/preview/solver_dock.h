@@ -36,7 +36,7 @@ public:
 
     const PreviewDisplay& display() const { return m_display; }
     void setDisplay(const PreviewDisplay& display);
-    void setLegend(const std::optional<solver::FalseColourLegend>& legend, double whiteReference);
+    void setLegend(const std::optional<output::FalseColourLegend>& legend, double whiteReference);
     void setInspection(const QString& text);
 
     // Pushes one SetSolverSettings (what every control of the dock does).
@@ -84,15 +84,15 @@ class LegendWidget : public QWidget {
     Q_OBJECT
 public:
     explicit LegendWidget(QWidget* parent = nullptr);
-    void setLegend(const std::optional<solver::FalseColourLegend>& legend);
-    const std::optional<solver::FalseColourLegend>& legend() const { return m_legend; }
+    void setLegend(const std::optional<output::FalseColourLegend>& legend);
+    const std::optional<output::FalseColourLegend>& legend() const { return m_legend; }
     QSize sizeHint() const override;
 
 protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
-    std::optional<solver::FalseColourLegend> m_legend;
+    std::optional<output::FalseColourLegend> m_legend;
 };
 
 } // namespace regio::editor

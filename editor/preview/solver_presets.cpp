@@ -79,23 +79,15 @@ DryRun dryRun(const model::Scene& scene)
 {
     DryRun out;
     const auto start = std::chrono::steady_clock::now();
-    const model::SolverSettings& s = scene.solver;
-    out.settings.hemicube = s.hemicube;
-    out.settings.maxIterations = s.maxIterations;
-    out.settings.convergence = s.convergence;
-    out.settings.patchSize = s.patchSize;
-    out.settings.elementsPerPatch = s.elementsPerPatch;
-    out.settings.visibility = s.visibility == model::Visibility::ZBuffer ? solver::VisibilityMode::ZBuffer
-                                                                         : solver::VisibilityMode::Painter;
-    out.settings.regions = s.regions;
-    solver::PrepareOptions options;
-    options.regions = s.regions;
-    solver::PrepareResult prepared = solver::prepareScene(scene, options);
-    out.diagnostics = prepared.diagnostics;
-    if (prepared.scene) {
+    // What Solver::create would run with (solver/settings.h), and the same preparation.
+    out.settings = solver::resolveSettings(scene.solver);
+    model::Result<solver::PreparedScene> prepared =
+        solver::prepareScene(scene, solver::prepareOptionsFor(out.settings));
+    out.diagnostics = prepared.diagnostics();
+    if (prepared) {
         out.ok = true;
-        out.stats = prepared.scene->stats;
-        out.regions = int(prepared.scene->regions.size());
+        out.stats = prepared->stats;
+        out.regions = int(prepared->regions.size());
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -103,14 +95,21 @@ DryRun dryRun(const model::Scene& scene)
 
 QString describeDryRun(const DryRun& run)
 {
-    const solver::EffectiveSettings& s = run.settings;
+    const model::SolverSettings& s = run.settings;
     QStringList lines;
     lines << SolverPresets::tr("Hemicube: %1 x %1 (sides %1 x %2)").arg(s.hemicube).arg(s.hemicube / 2);
     lines << SolverPresets::tr("Patch size: %1 m, %2 elements per patch").arg(s.patchSize).arg(s.elementsPerPatch);
     lines << SolverPresets::tr("Stops after %1 iterations or below %2 % unshot").arg(s.maxIterations).arg(100.0 * s.convergence);
     lines << SolverPresets::tr("Visibility: %1; regions: %2")
-                 .arg(QString::fromLatin1(solver::visibilityModeName(s.visibility)),
+                 .arg(QString::fromLatin1(model::visibilityName(s.visibility)),
                       QString::fromLatin1(model::regionsModeName(s.regions)));
+    if (s.adaptive.enabled)
+        lines << SolverPresets::tr("Adaptive subdivision: threshold %1, shortest edge %2 m, anchoring %3")
+                     .arg(s.adaptive.threshold)
+                     .arg(s.adaptive.minEdge)
+                     .arg(s.adaptive.anchoring ? SolverPresets::tr("on") : SolverPresets::tr("off"));
+    else
+        lines << SolverPresets::tr("Adaptive subdivision: off");
     if (run.ok) {
         lines << SolverPresets::tr("Regions: %1; BSP fragments: %2 (%3 splits, depth %4)")
                      .arg(run.regions)

@@ -25,7 +25,7 @@ QString presetName(SolverPreset preset);
 // settings, regions, fragments, patches and elements (solver::prepareScene).
 struct DryRun {
     bool ok = false;
-    solver::EffectiveSettings settings;
+    model::SolverSettings settings;
     solver::PrepareStats stats;
     int regions = 0;
     model::Diagnostics diagnostics;

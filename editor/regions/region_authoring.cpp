@@ -291,29 +291,25 @@ bool RegionAuthoring::proposeRegions()
 {
     QApplication::setOverrideCursor(Qt::WaitCursor);
     const model::Scene& scene = m_document->scene();
-    solver::RegionProposal proposal = solver::proposeRegions(scene);
+    model::Result<solver::RegionProposal> proposed = solver::proposeRegions(scene);
     // The figures of the scene as it is, beside the proposal's.
     std::optional<solver::BspComparison> now = m_figures->comparison();
     if (!now || m_figures->stale())
         now = solver::compareWithSingleBsp(scene);
     QApplication::restoreOverrideCursor();
 
-    if (proposal.regions.empty() || !proposal.figures) {
-        QString reason = tr("no regions could be proposed");
-        for (const model::Diagnostic& d : proposal.diagnostics)
-            if (d.isError()) {
-                reason = toQString(d.message);
-                break;
-            }
+    if (!proposed || proposed->regions.empty()) {
+        const QString reason = proposed ? tr("no regions could be proposed") : toQString(proposed.error().message);
         emit statusMessage(tr("No proposal: %1").arg(reason));
         discardProposal();
         return false;
     }
+    solver::RegionProposal& proposal = *proposed;
     QString text = tr("<b>Proposed: %n region(s)</b>", nullptr, int(proposal.regions.size())) + QStringLiteral("<br>") +
                    tr("%1 fragments, %2 splits, depth %3")
-                       .arg(proposal.figures->fragments)
-                       .arg(proposal.figures->splits)
-                       .arg(proposal.figures->maxDepth);
+                       .arg(proposal.figures.fragments)
+                       .arg(proposal.figures.splits)
+                       .arg(proposal.figures.maxDepth);
     if (now && now->authored && !scene.regions.empty())
         text += QStringLiteral("<br>") + tr("Current regions: %1 fragments, %2 splits")
                                              .arg(now->authored->fragments)

@@ -16,26 +16,25 @@ int materialIndex(const Scene& scene, const std::string& materialId)
     return -1;
 }
 
-std::string materialPointer(int m) { return "/materials/" + std::to_string(m); }
 
 } // namespace
 
-std::optional<Diagnostic> checkReflectance(const Rgb& reflectance)
+Check checkReflectance(const Rgb& reflectance)
 {
     for (int c = 0; c < 3; ++c)
         if (!std::isfinite(reflectance[c]) || reflectance[c] < 0.0 || reflectance[c] >= 1.0)
             return makeError("reflectance must lie in [0, 1) on every channel, not " +
                              std::to_string(reflectance[c]));
-    return std::nullopt;
+    return success();
 }
 
-std::optional<Diagnostic> checkEmission(const Rgb& emission)
+Check checkEmission(const Rgb& emission)
 {
     for (int c = 0; c < 3; ++c)
         if (!std::isfinite(emission[c]) || emission[c] < 0.0)
             return makeError("emission must be a finite, non-negative number on every channel, not " +
                              std::to_string(emission[c]));
-    return std::nullopt;
+    return success();
 }
 
 Result<int> addMaterial(Scene& scene, Material material, int index)
@@ -46,18 +45,12 @@ Result<int> addMaterial(Scene& scene, Material material, int index)
     if (index == -1)
         index = count;
     std::string pointer = materialPointer(index);
-    if (auto error = edit::checkNewId(scene, material.id, "material")) {
-        error->pointer = pointer + "/id";
-        return *error;
-    }
-    if (auto error = checkReflectance(material.reflectance)) {
-        error->pointer = pointer + "/reflectance";
-        return *error;
-    }
-    if (auto error = checkEmission(material.emission)) {
-        error->pointer = pointer + "/emission";
-        return *error;
-    }
+    if (Check check = edit::checkNewId(scene, material.id, "material"); !check)
+        return withPointer(check.error(), pointer + "/id");
+    if (Check check = checkReflectance(material.reflectance); !check)
+        return withPointer(check.error(), pointer + "/reflectance");
+    if (Check check = checkEmission(material.emission); !check)
+        return withPointer(check.error(), pointer + "/emission");
     scene.materials.insert(scene.materials.begin() + index, std::move(material));
     return index;
 }
@@ -73,12 +66,12 @@ Result<RemovedMaterial> removeMaterial(Scene& scene, const std::string& material
             const Part& part = object.parts[size_t(p)];
             if (part.material == materialId)
                 return makeError("material \"" + materialId + "\" is used by part \"" + part.id + "\"",
-                                 edit::partPointer(o, p) + "/material", {object.id, part.id});
+                                 partPointer(o, p) + "/material", {object.id, part.id});
             for (int f = 0; f < int(part.faces.size()); ++f)
                 if (part.faces[size_t(f)].material == materialId)
                     return makeError("material \"" + materialId + "\" is used by face \"" +
                                          part.faces[size_t(f)].id + "\"",
-                                     edit::facePointer(o, p, f) + "/material",
+                                     facePointer(o, p, f) + "/material",
                                      {object.id, part.id, part.faces[size_t(f)].id});
         }
     }
@@ -94,8 +87,8 @@ Result<Unit> renameMaterial(Scene& scene, const std::string& materialId, const s
         return edit::unknown("material", materialId);
     if (newId == materialId)
         return Unit{};
-    if (auto error = edit::checkNewId(scene, newId, "material"))
-        return *error;
+    if (Check check = edit::checkNewId(scene, newId, "material"); !check)
+        return check.error();
     material->id = newId;
     for (Object& object : scene.objects)
         for (Part& part : object.parts) {
@@ -113,10 +106,8 @@ Result<Rgb> setMaterialReflectance(Scene& scene, const std::string& materialId, 
     int m = materialIndex(scene, materialId);
     if (m < 0)
         return edit::unknown("material", materialId);
-    if (auto error = checkReflectance(reflectance)) {
-        error->pointer = materialPointer(m) + "/reflectance";
-        return *error;
-    }
+    if (Check check = checkReflectance(reflectance); !check)
+        return withPointer(check.error(), materialPointer(m) + "/reflectance");
     Rgb previous = scene.materials[size_t(m)].reflectance;
     scene.materials[size_t(m)].reflectance = reflectance;
     return previous;
@@ -127,10 +118,8 @@ Result<Rgb> setMaterialEmission(Scene& scene, const std::string& materialId, con
     int m = materialIndex(scene, materialId);
     if (m < 0)
         return edit::unknown("material", materialId);
-    if (auto error = checkEmission(emission)) {
-        error->pointer = materialPointer(m) + "/emission";
-        return *error;
-    }
+    if (Check check = checkEmission(emission); !check)
+        return withPointer(check.error(), materialPointer(m) + "/emission");
     Rgb previous = scene.materials[size_t(m)].emission;
     scene.materials[size_t(m)].emission = emission;
     return previous;

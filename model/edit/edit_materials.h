@@ -17,9 +17,9 @@ namespace regio::model {
 
 // Reflectance: finite, each channel in [0, 1) - a channel of 1 would reflect
 // all light and the progressive solution would never converge (B = E / (1 - rho)).
-std::optional<Diagnostic> checkReflectance(const Rgb& reflectance);
+Check checkReflectance(const Rgb& reflectance);
 // Emission: finite and non-negative per channel (W/m^2).
-std::optional<Diagnostic> checkEmission(const Rgb& emission);
+Check checkEmission(const Rgb& emission);
 
 // Inserts at `index` (-1 = append); returns the index.
 Result<int> addMaterial(Scene& scene, Material material, int index = -1);

@@ -19,15 +19,13 @@ Result<int> insertObject(Scene& scene, Object object, int index)
     if (index == -1)
         index = count;
     std::unordered_set<std::string> taken;
-    if (auto error = edit::checkNewId(scene, object.id, "object")) {
-        error->pointer = edit::objectPointer(index) + "/id";
-        return *error;
-    }
+    if (Check check = edit::checkNewId(scene, object.id, "object"); !check)
+        return withPointer(check.error(), objectPointer(index) + "/id");
     taken.insert(object.id);
     for (size_t p = 0; p < object.parts.size(); ++p)
-        if (auto error = edit::checkNewPart(scene, object.parts[p],
-                                            edit::partPointer(index, int(p)), taken))
-            return *error;
+        if (Check check = edit::checkNewPart(scene, object.parts[p],
+                                            partPointer(index, int(p)), taken); !check)
+            return check.error();
     scene.objects.insert(scene.objects.begin() + index, std::move(object));
     return index;
 }
@@ -65,8 +63,8 @@ Result<Unit> renameObject(Scene& scene, const std::string& objectId, const std::
         return edit::unknown("object", objectId);
     if (newId == objectId)
         return Unit{};
-    if (auto error = edit::checkNewId(scene, newId, "object"))
-        return *error;
+    if (Check check = edit::checkNewId(scene, newId, "object"); !check)
+        return check.error();
     object->id = newId;
     return Unit{};
 }
@@ -183,8 +181,8 @@ Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& pa
             std::all_of(object.parts.begin(), object.parts.end(),
                         [&](const Part& p) { return grouped.count(p.id) > 0; }))
             released.insert(object.id);
-    if (auto error = edit::checkNewId(scene, objectId, "object", {}, released))
-        return *error;
+    if (Check check = edit::checkNewId(scene, objectId, "object", {}, released); !check)
+        return check.error();
 
     ObjectLayout layout;
     for (int o = 0; o < int(scene.objects.size()); ++o) {

@@ -11,7 +11,6 @@ namespace regio::model {
 
 using edit::locatePart;
 using edit::objectIndex;
-using edit::partPointer;
 
 namespace {
 
@@ -23,12 +22,12 @@ std::vector<std::string> faceIdsOf(const Part& part)
     return ids;
 }
 
-std::optional<Diagnostic> checkIndex(int index, int count, const std::string& what)
+Check checkIndex(int index, int count, const std::string& what)
 {
     if (index < -1 || index > count)
         return makeError(what + " position " + std::to_string(index) + " is out of range (0.." +
                          std::to_string(count) + ")");
-    return std::nullopt;
+    return success();
 }
 
 } // namespace
@@ -41,13 +40,13 @@ Result<int> addPart(Scene& scene, const std::string& objectId, Part part, int in
     if (o < 0)
         return edit::unknown("object", objectId);
     auto& parts = scene.objects[size_t(o)].parts;
-    if (auto error = checkIndex(index, int(parts.size()), "part"))
-        return *error;
+    if (Check check = checkIndex(index, int(parts.size()), "part"); !check)
+        return check.error();
     if (index == -1)
         index = int(parts.size());
     std::unordered_set<std::string> taken;
-    if (auto error = edit::checkNewPart(scene, part, partPointer(o, index), taken))
-        return *error;
+    if (Check check = edit::checkNewPart(scene, part, partPointer(o, index), taken); !check)
+        return check.error();
     parts.insert(parts.begin() + index, std::move(part));
     return index;
 }
@@ -73,8 +72,8 @@ Result<Unit> restorePart(Scene& scene, const RemovedPart& removed)
     if (removed.index < 0 || removed.index > int(parts.size()))
         return makeError("part position " + std::to_string(removed.index) + " is out of range");
     std::unordered_set<std::string> taken;
-    if (auto error = edit::checkNewPart(scene, removed.part, partPointer(o, removed.index), taken))
-        return *error;
+    if (Check check = edit::checkNewPart(scene, removed.part, partPointer(o, removed.index), taken); !check)
+        return check.error();
     parts.insert(parts.begin() + removed.index, removed.part);
     restoreBspOrders(scene, removed.bspOrders);
     return Unit{};
@@ -103,8 +102,8 @@ Result<Unit> renamePart(Scene& scene, const std::string& partId, const std::stri
         return edit::unknown("part", partId);
     if (newId == partId)
         return Unit{};
-    if (auto error = edit::checkNewId(scene, newId, "part"))
-        return *error;
+    if (Check check = edit::checkNewId(scene, newId, "part"); !check)
+        return check.error();
     part->id = newId;
     return Unit{};
 }
@@ -123,9 +122,9 @@ Result<std::string> setPartMaterial(Scene& scene, const std::string& partId, std
     auto at = locatePart(scene, partId);
     if (!at.valid())
         return edit::unknown("part", partId);
-    if (auto error = edit::checkMaterialReference(scene, material,
-                                                  partPointer(at.object, at.part) + "/material"))
-        return *error;
+    if (Check check = edit::checkMaterialReference(scene, material,
+                                                  partPointer(at.object, at.part) + "/material"); !check)
+        return check.error();
     std::swap(scene.objects[size_t(at.object)].parts[size_t(at.part)].material, material);
     return material;
 }
@@ -140,8 +139,8 @@ Result<PartPlace> movePart(Scene& scene, const std::string& partId, const std::s
     if (target < 0)
         return edit::unknown("object", objectId);
     int countAfterTaking = int(scene.objects[size_t(target)].parts.size()) - (target == at.object);
-    if (auto error = checkIndex(index, countAfterTaking, "part"))
-        return *error;
+    if (Check check = checkIndex(index, countAfterTaking, "part"); !check)
+        return check.error();
     if (index == -1)
         index = countAfterTaking;
     auto& from = scene.objects[size_t(at.object)].parts;
@@ -162,8 +161,8 @@ Result<Unit> renameFace(Scene& scene, const std::string& faceId, const std::stri
         return edit::unknown("face", faceId);
     if (newId == faceId)
         return Unit{};
-    if (auto error = edit::checkNewId(scene, newId, "face"))
-        return *error;
+    if (Check check = edit::checkNewId(scene, newId, "face"); !check)
+        return check.error();
     scene.objects[size_t(at.object)].parts[size_t(at.part)].faces[size_t(at.face)].id = newId;
     renameFaceInBspOrders(scene, faceId, newId);
     return Unit{};
@@ -174,9 +173,9 @@ Result<std::string> setFaceMaterial(Scene& scene, const std::string& faceId, std
     auto at = scene.locateFace(faceId);
     if (!at.valid())
         return edit::unknown("face", faceId);
-    if (auto error = edit::checkMaterialReference(
-            scene, material, edit::facePointer(at.object, at.part, at.face) + "/material"))
-        return *error;
+    if (Check check = edit::checkMaterialReference(
+            scene, material, facePointer(at.object, at.part, at.face) + "/material"); !check)
+        return check.error();
     std::swap(scene.objects[size_t(at.object)].parts[size_t(at.part)].faces[size_t(at.face)].material,
               material);
     return material;
@@ -197,8 +196,8 @@ Result<PartGeometry> transformPart(Scene& scene, const std::string& partId, cons
 Result<std::vector<PartGeometry>> transformParts(Scene& scene, const std::vector<std::string>& partIds,
                                                  const glm::dmat4& m)
 {
-    if (auto error = checkAffineTransform(m))
-        return *error;
+    if (Check check = checkAffineTransform(m); !check)
+        return check.error();
     std::vector<Part*> parts;
     std::unordered_set<std::string> seen;
     for (const std::string& id : partIds) {
@@ -247,14 +246,12 @@ Result<std::vector<PartGeometry>> setPartGeometries(Scene& scene, std::vector<Pa
         const PartGeometry& g = geometries[i];
         std::string pointer = partPointer(places[i].object, places[i].part);
         for (size_t f = 0; f < g.faces.size(); ++f) {
-            if (auto error = edit::checkNewId(scene, g.faces[f].id, "face", taken, released)) {
-                error->pointer = pointer + "/faces/" + std::to_string(f) + "/id";
-                return *error;
-            }
+            if (Check check = edit::checkNewId(scene, g.faces[f].id, "face", taken, released); !check)
+                return withPointer(check.error(), pointer + "/faces/" + std::to_string(f) + "/id");
             taken.insert(g.faces[f].id);
         }
-        if (auto error = edit::checkPartGeometry(scene, g.vertices, g.faces, pointer))
-            return *error;
+        if (Check check = edit::checkPartGeometry(scene, g.vertices, g.faces, pointer); !check)
+            return check.error();
     }
     for (const std::string& id : released)
         if (!taken.count(id))
@@ -291,11 +288,11 @@ Result<PartSplit> splitPartInScene(Scene& scene, const std::string& partId, cons
         released.insert(face.id);
     std::unordered_set<std::string> taken;
     std::string pointer = partPointer(at.object, at.part);
-    if (auto error = edit::checkNewPart(scene, cut->front, pointer, taken, released))
-        return *error;
-    if (auto error = edit::checkNewPart(scene, cut->back, partPointer(at.object, at.part + 1),
-                                        taken, released))
-        return *error;
+    if (Check check = edit::checkNewPart(scene, cut->front, pointer, taken, released); !check)
+        return check.error();
+    if (Check check = edit::checkNewPart(scene, cut->back, partPointer(at.object, at.part + 1),
+                                        taken, released); !check)
+        return check.error();
 
     PartSplit split;
     split.original = {object.id, at.part, source, {}};
@@ -347,9 +344,9 @@ Result<Unit> unsplitPart(Scene& scene, const PartSplit& split)
             released.insert(face.id);
     }
     std::unordered_set<std::string> taken;
-    if (auto error = edit::checkNewPart(scene, split.original.part, partPointer(o, index), taken,
-                                        released))
-        return *error;
+    if (Check check = edit::checkNewPart(scene, split.original.part, partPointer(o, index), taken,
+                                        released); !check)
+        return check.error();
     parts.erase(parts.begin() + index, parts.begin() + index + 2);
     parts.insert(parts.begin() + index, split.original.part);
     restoreBspOrders(scene, split.original.bspOrders);

@@ -17,9 +17,8 @@ int regionIndex(const Scene& scene, const std::string& regionId)
     return -1;
 }
 
-std::string regionPointer(int r) { return "/regions/" + std::to_string(r); }
 
-std::optional<Diagnostic> checkBox(const Vec3& min, const Vec3& max, const std::string& pointer)
+Check checkBox(const Vec3& min, const Vec3& max, const std::string& pointer)
 {
     if (!edit::isFinite(min) || !edit::isFinite(max))
         return makeError("region corners must be finite numbers", pointer);
@@ -30,10 +29,10 @@ std::optional<Diagnostic> checkBox(const Vec3& min, const Vec3& max, const std::
                                  ": " + std::to_string(min[a]) + " >= " + std::to_string(max[a]) +
                                  ")",
                              pointer);
-    return std::nullopt;
+    return success();
 }
 
-std::optional<Diagnostic> checkOrder(const Scene& scene, const std::vector<std::string>& order,
+Check checkOrder(const Scene& scene, const std::vector<std::string>& order,
                                      const std::string& pointer)
 {
     std::unordered_set<std::string> seen;
@@ -45,7 +44,7 @@ std::optional<Diagnostic> checkOrder(const Scene& scene, const std::vector<std::
         if (!seen.insert(faceId).second)
             return makeError("the BSP order names \"" + faceId + "\" twice", entry);
     }
-    return std::nullopt;
+    return success();
 }
 
 } // namespace
@@ -57,12 +56,12 @@ Result<int> addRegion(Scene& scene, Region region, int index)
         return makeError("region index " + std::to_string(index) + " is out of range");
     if (index == -1)
         index = count;
-    if (auto error = edit::checkNewId(scene, region.id, "region"))
-        return *error;
-    if (auto error = checkBox(region.min, region.max, regionPointer(index)))
-        return *error;
-    if (auto error = checkOrder(scene, region.bspOrder, regionPointer(index)))
-        return *error;
+    if (Check check = edit::checkNewId(scene, region.id, "region"); !check)
+        return check.error();
+    if (Check check = checkBox(region.min, region.max, regionPointer(index)); !check)
+        return check.error();
+    if (Check check = checkOrder(scene, region.bspOrder, regionPointer(index)); !check)
+        return check.error();
     scene.regions.insert(scene.regions.begin() + index, std::move(region));
     return index;
 }
@@ -84,8 +83,8 @@ Result<Unit> renameRegion(Scene& scene, const std::string& regionId, const std::
         return edit::unknown("region", regionId);
     if (newId == regionId)
         return Unit{};
-    if (auto error = edit::checkNewId(scene, newId, "region"))
-        return *error;
+    if (Check check = edit::checkNewId(scene, newId, "region"); !check)
+        return check.error();
     region->id = newId;
     return Unit{};
 }
@@ -105,8 +104,8 @@ Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const 
     int r = regionIndex(scene, regionId);
     if (r < 0)
         return edit::unknown("region", regionId);
-    if (auto error = checkBox(min, max, regionPointer(r)))
-        return *error;
+    if (Check check = checkBox(min, max, regionPointer(r)); !check)
+        return check.error();
     Region& region = scene.regions[size_t(r)];
     RegionBox previous{region.min, region.max};
     region.min = min;
@@ -120,8 +119,8 @@ Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& re
     int r = regionIndex(scene, regionId);
     if (r < 0)
         return edit::unknown("region", regionId);
-    if (auto error = checkOrder(scene, order, regionPointer(r)))
-        return *error;
+    if (Check check = checkOrder(scene, order, regionPointer(r)); !check)
+        return check.error();
     std::swap(scene.regions[size_t(r)].bspOrder, order);
     return order;
 }

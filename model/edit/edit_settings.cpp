@@ -10,14 +10,14 @@ namespace regio::model {
 
 namespace {
 
-std::optional<Diagnostic> settingError(const std::string& key, const std::string& expected)
+Check settingError(const std::string& key, const std::string& expected)
 {
     return makeError(key + " must be " + expected, "/solver/" + key);
 }
 
 } // namespace
 
-std::optional<Diagnostic> checkSolverSettings(const SolverSettings& s)
+Check checkSolverSettings(const SolverSettings& s)
 {
     if (s.hemicube < 8 || s.hemicube > 4096 || s.hemicube % 2 != 0)
         return settingError("hemicube", "an even resolution from 8 to 4096, not " +
@@ -36,19 +36,19 @@ std::optional<Diagnostic> checkSolverSettings(const SolverSettings& s)
         return settingError("maxIterations", "at least 1, not " + std::to_string(s.maxIterations));
     if (!std::isfinite(s.convergence) || s.convergence <= 0.0 || s.convergence >= 1.0)
         return settingError("convergence", "a fraction of the emitted power in (0, 1)");
-    return std::nullopt;
+    return success();
 }
 
 Result<SolverSettings> setSolverSettings(Scene& scene, const SolverSettings& settings)
 {
-    if (auto error = checkSolverSettings(settings))
-        return *error;
+    if (Check check = checkSolverSettings(settings); !check)
+        return check.error();
     SolverSettings previous = scene.solver;
     scene.solver = settings;
     return previous;
 }
 
-std::optional<Diagnostic> checkCamera(const Camera& camera)
+Check checkCamera(const Camera& camera)
 {
     if (!edit::isFinite(camera.position) || !edit::isFinite(camera.target) ||
         !edit::isFinite(camera.up) || !std::isfinite(camera.fovY))
@@ -62,14 +62,14 @@ std::optional<Diagnostic> checkCamera(const Camera& camera)
                          "/camera/up");
     if (camera.fovY <= 0.0 || camera.fovY >= 180.0)
         return makeError("the camera's field of view must lie in (0, 180) degrees", "/camera/fovY");
-    return std::nullopt;
+    return success();
 }
 
 Result<std::optional<Camera>> setCamera(Scene& scene, const std::optional<Camera>& camera)
 {
     if (camera)
-        if (auto error = checkCamera(*camera))
-            return *error;
+        if (Check check = checkCamera(*camera); !check)
+            return check.error();
     std::optional<Camera> previous = scene.camera;
     scene.camera = camera;
     return previous;

@@ -17,13 +17,13 @@ namespace regio::model {
 //   adaptive.minEdge    finite, > 0 metres
 //   maxIterations       >= 1
 //   convergence         finite, in (0, 1) (a fraction of the emitted power)
-std::optional<Diagnostic> checkSolverSettings(const SolverSettings& settings);
+Check checkSolverSettings(const SolverSettings& settings);
 Result<SolverSettings> setSolverSettings(Scene& scene, const SolverSettings& settings);
 
 // A camera needs finite vectors, a target away from the position, an up
 // vector not along the view direction and a vertical field of view in
 // (0, 180) degrees. The diagnostic points into "/camera".
-std::optional<Diagnostic> checkCamera(const Camera& camera);
+Check checkCamera(const Camera& camera);
 // std::nullopt clears the camera. Returns the previous camera (or nullopt).
 Result<std::optional<Camera>> setCamera(Scene& scene, const std::optional<Camera>& camera);
 Result<std::optional<Camera>> clearCamera(Scene& scene);

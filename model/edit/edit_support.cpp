@@ -4,17 +4,6 @@
 
 namespace regio::model::edit {
 
-std::string objectPointer(int object) { return "/objects/" + std::to_string(object); }
-
-std::string partPointer(int object, int part)
-{
-    return objectPointer(object) + "/parts/" + std::to_string(part);
-}
-
-std::string facePointer(int object, int part, int face)
-{
-    return partPointer(object, part) + "/faces/" + std::to_string(face);
-}
 
 PartLocation locatePart(const Scene& scene, const std::string& partId)
 {
@@ -40,7 +29,7 @@ Diagnostic unknown(const std::string& what, const std::string& id)
     return makeError("no " + what + " with id \"" + id + "\"");
 }
 
-std::optional<Diagnostic> checkNewId(const Scene& scene, const std::string& id,
+Check checkNewId(const Scene& scene, const std::string& id,
                                      const std::string& what,
                                      const std::unordered_set<std::string>& alsoTaken,
                                      const std::unordered_set<std::string>& released)
@@ -50,20 +39,20 @@ std::optional<Diagnostic> checkNewId(const Scene& scene, const std::string& id,
     if (alsoTaken.count(id) || (scene.idInUse(id) && !released.count(id)))
         return makeError("the id \"" + id + "\" is already in use; ids must be unique across "
                          "objects, parts, faces, materials and regions");
-    return std::nullopt;
+    return success();
 }
 
-std::optional<Diagnostic> checkMaterialReference(const Scene& scene, const std::string& material,
+Check checkMaterialReference(const Scene& scene, const std::string& material,
                                                  const std::string& pointer)
 {
     if (material.empty() || scene.findMaterial(material))
-        return std::nullopt;
+        return success();
     return makeError("unknown material \"" + material + "\"", pointer);
 }
 
 bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-std::optional<Diagnostic> checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
+Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
                                             const std::vector<Face>& faces,
                                             const std::string& pointer)
 {
@@ -81,31 +70,27 @@ std::optional<Diagnostic> checkPartGeometry(const Scene& scene, const std::vecto
                 return makeError("face \"" + face.id + "\" names vertex " + std::to_string(index) +
                                      " of a part with " + std::to_string(vertices.size()),
                                  fp + "/loop");
-        if (auto error = checkMaterialReference(scene, face.material, fp + "/material"))
-            return error;
+        if (Check check = checkMaterialReference(scene, face.material, fp + "/material"); !check)
+            return check;
     }
-    return std::nullopt;
+    return success();
 }
 
-std::optional<Diagnostic> checkNewPart(const Scene& scene, const Part& part,
+Check checkNewPart(const Scene& scene, const Part& part,
                                        const std::string& pointer,
                                        std::unordered_set<std::string>& taken,
                                        const std::unordered_set<std::string>& released)
 {
-    if (auto error = checkNewId(scene, part.id, "part", taken, released)) {
-        error->pointer = pointer + "/id";
-        return error;
-    }
+    if (Check check = checkNewId(scene, part.id, "part", taken, released); !check)
+        return withPointer(check.error(), pointer + "/id");
     taken.insert(part.id);
     for (size_t f = 0; f < part.faces.size(); ++f) {
-        if (auto error = checkNewId(scene, part.faces[f].id, "face", taken, released)) {
-            error->pointer = pointer + "/faces/" + std::to_string(f) + "/id";
-            return error;
-        }
+        if (Check check = checkNewId(scene, part.faces[f].id, "face", taken, released); !check)
+            return withPointer(check.error(), pointer + "/faces/" + std::to_string(f) + "/id");
         taken.insert(part.faces[f].id);
     }
-    if (auto error = checkMaterialReference(scene, part.material, pointer + "/material"))
-        return error;
+    if (Check check = checkMaterialReference(scene, part.material, pointer + "/material"); !check)
+        return check;
     return checkPartGeometry(scene, part.vertices, part.faces, pointer);
 }
 

@@ -5,6 +5,8 @@
 // "validate" half. Diagnostics carry the JSON pointer of the element concerned,
 // the same one validation and the file format use.
 #include "model/diagnostic.h"
+#include "model/io/json_pointer.h"
+#include "model/result.h"
 #include "model/scene.h"
 
 #include <optional>
@@ -13,10 +15,6 @@
 #include <vector>
 
 namespace regio::model::edit {
-
-std::string objectPointer(int object);
-std::string partPointer(int object, int part);
-std::string facePointer(int object, int part, int face);
 
 struct PartLocation {
     int object = -1;
@@ -31,27 +29,27 @@ Diagnostic unknown(const std::string& what, const std::string& id);
 // A new id must be non-empty and unused by any object, part, face, material or
 // region of the scene, and not in `alsoTaken` (ids claimed by the same edit).
 // Ids in `released` count as free: they belong to what the edit removes.
-std::optional<Diagnostic> checkNewId(const Scene& scene, const std::string& id,
+Check checkNewId(const Scene& scene, const std::string& id,
                                      const std::string& what,
                                      const std::unordered_set<std::string>& alsoTaken = {},
                                      const std::unordered_set<std::string>& released = {});
 
 // A material reference is empty (inherit / none) or names an existing material.
-std::optional<Diagnostic> checkMaterialReference(const Scene& scene, const std::string& material,
+Check checkMaterialReference(const Scene& scene, const std::string& material,
                                                  const std::string& pointer);
 
 // Structural checks of a part about to enter the scene: ids (part and faces)
 // fresh and distinct, loops of at least 3 in-range vertices, finite vertices,
 // known materials. Ids claimed are added to `taken`. Geometric quality
 // (planarity, convexity) is left to validation, which reports it live.
-std::optional<Diagnostic> checkNewPart(const Scene& scene, const Part& part,
+Check checkNewPart(const Scene& scene, const Part& part,
                                        const std::string& pointer,
                                        std::unordered_set<std::string>& taken,
                                        const std::unordered_set<std::string>& released = {});
 
 // The same without the id check: the geometry (vertices, loops, face
 // materials) of a part.
-std::optional<Diagnostic> checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
+Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
                                             const std::vector<Face>& faces,
                                             const std::string& pointer);
 

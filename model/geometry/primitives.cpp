@@ -10,25 +10,25 @@ namespace regio::model {
 
 namespace {
 
-std::optional<Diagnostic> checkId(const std::string& id)
+Check checkId(const std::string& id)
 {
     if (id.empty())
         return makeError("a primitive needs a non-empty id");
-    return std::nullopt;
+    return success();
 }
 
 bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
 
-std::optional<Diagnostic> checkBox(const std::string& id, const Vec3& min, const Vec3& max)
+Check checkBox(const std::string& id, const Vec3& min, const Vec3& max)
 {
-    if (auto error = checkId(id))
-        return error;
+    if (Check check = checkId(id); !check)
+        return check;
     if (!edit::isFinite(min) || !edit::isFinite(max))
         return makeError("the corners of \"" + id + "\" must be finite numbers");
     for (int a = 0; a < 3; ++a)
         if (!(max[a] - min[a] > 0.0))
             return makeError("\"" + id + "\" needs min < max on every axis");
-    return std::nullopt;
+    return success();
 }
 
 // Vertex k of a box: bit 0 selects max.x, bit 1 max.y, bit 2 max.z.
@@ -55,16 +55,16 @@ Part boxPart(const std::string& id, const Vec3& min, const Vec3& max, const std:
 Result<Part> makeBox(const std::string& id, const Vec3& min, const Vec3& max,
                      const std::string& material)
 {
-    if (auto error = checkBox(id, min, max))
-        return *error;
+    if (Check check = checkBox(id, min, max); !check)
+        return check.error();
     return boxPart(id, min, max, material);
 }
 
 Result<Part> makeRoom(const std::string& id, const Vec3& min, const Vec3& max,
                       const std::string& material)
 {
-    if (auto error = checkBox(id, min, max))
-        return *error;
+    if (Check check = checkBox(id, min, max); !check)
+        return check.error();
     Part part = boxPart(id, min, max, material);
     // Reversing a loop but keeping its first corner flips the normal and keeps
     // the faces' starting vertices, so box and room read alike.
@@ -76,8 +76,8 @@ Result<Part> makeRoom(const std::string& id, const Vec3& min, const Vec3& max,
 Result<Part> makePrism(const std::string& id, int sides, double radius, double height,
                        const Vec3& baseCenter, const std::string& material)
 {
-    if (auto error = checkId(id))
-        return *error;
+    if (Check check = checkId(id); !check)
+        return check.error();
     if (sides < 3 || sides > 1024)
         return makeError("a prism needs 3 to 1024 sides, not " + std::to_string(sides));
     if (!positiveFinite(radius) || !positiveFinite(height) || !edit::isFinite(baseCenter))
@@ -113,8 +113,8 @@ Result<Part> makePrism(const std::string& id, int sides, double radius, double h
 Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max,
                        const std::string& material)
 {
-    if (auto error = checkBox(id, min, max))
-        return *error;
+    if (Check check = checkBox(id, min, max); !check)
+        return check.error();
     Part part;
     part.id = id;
     part.material = material;
@@ -145,8 +145,8 @@ Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max,
 Result<Object> makeStairs(const std::string& id, int steps, double width, double depth,
                           double height, const Vec3& origin, const std::string& material)
 {
-    if (auto error = checkId(id))
-        return *error;
+    if (Check check = checkId(id); !check)
+        return check.error();
     if (steps < 1 || steps > 1000)
         return makeError("stairs need 1 to 1000 steps, not " + std::to_string(steps));
     if (!positiveFinite(width) || !positiveFinite(depth) || !positiveFinite(height) ||

@@ -157,7 +157,7 @@ struct Clipper {
 
     // Cuts `current` by `plane`; the front piece (kept at the part's place
     // in its object) and the back piece come back.
-    std::optional<Diagnostic> cut(const std::string& current, const Plane& plane, std::string& front,
+    Check cut(const std::string& current, const Plane& plane, std::string& front,
                                   std::string& back)
     {
         front = temporaryId(scene, partId, counter);
@@ -171,14 +171,14 @@ struct Clipper {
         caps.insert(split->frontCaps.begin(), split->frontCaps.end());
         caps.insert(split->backCaps.begin(), split->backCaps.end());
         record.splits.push_back(std::move(*split));
-        return std::nullopt;
+        return success();
     }
 
-    std::optional<Diagnostic> clip(std::string piece, const std::vector<int>& group)
+    Check clip(std::string piece, const std::vector<int>& group)
     {
         if (group.empty()) {
             done.push_back({piece, -1});
-            return std::nullopt;
+            return success();
         }
         // What sticks out of the group's bounds lies outside every region
         // (the piece is already inside the group's cell): cut it away first,
@@ -187,15 +187,15 @@ struct Clipper {
         for (int r : group)
             bounds.extend(boxes[size_t(r)]);
         bool inside = true;
-        if (auto error = trim(piece, bounds, inside))
-            return error;
+        if (Check check = trim(piece, bounds, inside); !check)
+            return check;
         if (!inside || (group.size() == 1 && !partTouchesBox(*scene.findPart(piece), bounds))) {
             done.push_back({piece, -1});
-            return std::nullopt;
+            return success();
         }
         if (group.size() == 1) {
             done.push_back({piece, group.front()});
-            return std::nullopt;
+            return success();
         }
 
         const auto plane = separatingPlane(boxes, group);
@@ -217,16 +217,16 @@ struct Clipper {
         if (highest <= kDistanceEpsilon)
             return clip(piece, high);
         std::string lowPiece, highPiece;
-        if (auto error = cut(piece, separating, lowPiece, highPiece))
-            return error;
-        if (auto error = clip(lowPiece, low))
-            return error;
+        if (Check check = cut(piece, separating, lowPiece, highPiece); !check)
+            return check;
+        if (Check check = clip(lowPiece, low); !check)
+            return check;
         return clip(highPiece, high);
     }
 
     // Cuts away the parts of `current` outside `box` (each an outside piece);
     // `inside` turns false when nothing of it is inside.
-    std::optional<Diagnostic> trim(std::string& current, const Box3& box, bool& inside)
+    Check trim(std::string& current, const Box3& box, bool& inside)
     {
         for (int axis = 0; axis < 3; ++axis) {
             for (int side = 0; side < 2; ++side) {
@@ -238,16 +238,16 @@ struct Clipper {
                     continue; // inside this face of the box
                 if (highest <= kDistanceEpsilon) {
                     inside = false; // at most touches the box
-                    return std::nullopt;
+                    return success();
                 }
                 std::string kept, outside;
-                if (auto error = cut(current, plane, kept, outside))
-                    return error;
+                if (Check check = cut(current, plane, kept, outside); !check)
+                    return check;
                 done.push_back({outside, -1});
                 current = kept;
             }
         }
-        return std::nullopt;
+        return success();
     }
 };
 
@@ -297,8 +297,8 @@ Result<RegionClip> clipPartToRegions(Scene& scene, const std::string& partId)
     for (size_t r = 0; r < boxes.size(); ++r)
         if (!boxes[r].empty)
             all.push_back(int(r));
-    if (auto error = clipper.clip(partId, all))
-        return refuse(*error);
+    if (Check check = clipper.clip(partId, all); !check)
+        return refuse(check.error());
     if (clip.splits.empty())
         return refuse(makeError("no region plane crosses part '" + partId + "' far enough to cut it", "", {partId}));
     const std::vector<Piece>& done = clipper.done;

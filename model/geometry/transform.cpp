@@ -8,7 +8,7 @@
 
 namespace regio::model {
 
-std::optional<Diagnostic> checkAffineTransform(const glm::dmat4& m)
+Check checkAffineTransform(const glm::dmat4& m)
 {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -27,7 +27,7 @@ std::optional<Diagnostic> checkAffineTransform(const glm::dmat4& m)
                                     std::abs(linear[c][2]));
     if (scale == 0.0 || std::abs(glm::determinant(linear)) < 1e-12 * scale * scale * scale)
         return makeError("the transform flattens the part (its determinant is zero)");
-    return std::nullopt;
+    return success();
 }
 
 bool isMirroring(const glm::dmat4& m) { return glm::determinant(glm::dmat3(m)) < 0.0; }

@@ -5,6 +5,7 @@
 // determinant) turns every loop clockwise seen from outside, so the loops are
 // reversed to keep the normals pointing out.
 #include "model/diagnostic.h"
+#include "model/result.h"
 #include "model/scene.h"
 
 #include <glm/mat4x4.hpp>
@@ -14,7 +15,7 @@
 namespace regio::model {
 
 // nullopt when `m` is finite, affine (last row 0 0 0 1) and not singular.
-std::optional<Diagnostic> checkAffineTransform(const glm::dmat4& m);
+Check checkAffineTransform(const glm::dmat4& m);
 bool isMirroring(const glm::dmat4& m);
 Vec3 transformPoint(const glm::dmat4& m, const Vec3& p);
 

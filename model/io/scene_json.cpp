@@ -3,6 +3,7 @@
 // read in scene_json_read.cpp, written in scene_json_write.cpp.
 #include "model/io/scene_json.h"
 
+#include "model/io/printable.h"
 #include "model/io/scene_json_detail.h"
 
 #include <algorithm>
@@ -39,26 +40,6 @@ void setTextPosition(std::string_view text, std::size_t offset, Diagnostic& diag
     diagnostic.column = column;
 }
 
-std::string appendPointer(const std::string& pointer, std::string_view token)
-{
-    std::string out = pointer;
-    out += '/';
-    for (char c : token) {
-        if (c == '~')
-            out += "~0";
-        else if (c == '/')
-            out += "~1";
-        else
-            out += c;
-    }
-    return out;
-}
-
-std::string appendPointer(const std::string& pointer, std::size_t index)
-{
-    return pointer + '/' + std::to_string(index);
-}
-
 std::string formatNumber(double value)
 {
     return json(value).dump();
@@ -68,39 +49,12 @@ namespace {
 
 // Messages quote bits of the input (nlohmann's "last read: '...'"); keep them
 // short and printable whatever bytes the file holds.
-std::string printable(std::string_view text, std::size_t maxBytes = 160)
-{
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (out.size() >= maxBytes) {
-            out += "...";
-            break;
-        }
-        const auto byte = static_cast<unsigned char>(text[i]);
-        std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3
-                                          : (byte >> 3) == 0x1E ? 4 : 0;
-        bool valid = length > 0 && i + length <= text.size();
-        for (std::size_t k = 1; valid && k < length; ++k)
-            valid = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
-        if (length == 1 && (byte < 0x20 || byte == 0x7F))
-            valid = false;
-        if (!valid) {
-            static const char* hex = "0123456789ABCDEF";
-            out += "\\x";
-            out += hex[byte >> 4];
-            out += hex[byte & 0xF];
-            continue;
-        }
-        out.append(text.substr(i, length));
-        i += length - 1;
-    }
-    return out;
-}
+std::string excerpt(std::string_view text, std::size_t maxBytes = 160) { return printable(text, maxBytes); }
 
 // Refuses what would make the real parser slow or its recursive tree
 // operations unsafe, before it runs (see the limits in scene_json_detail.h).
 // Everything else is left for the parser to judge.
-std::optional<Diagnostic> prescan(std::string_view text)
+Check prescan(std::string_view text)
 {
     auto refuse = [&](std::size_t offset, std::string message) {
         Diagnostic d = makeError(std::move(message));
@@ -150,7 +104,7 @@ std::optional<Diagnostic> prescan(std::string_view text)
             ++i;
         }
     }
-    return std::nullopt;
+    return success();
 }
 
 // The first byte of the complete token whose last byte is at `end` (a number,
@@ -212,7 +166,7 @@ public:
         level.key = key;
         level.memberOpen = true;
         if (level.value->contains(key))
-            m_diagnostics.push_back(makeError("duplicate key \"" + printable(key) + "\"",
+            m_diagnostics.push_back(makeError("duplicate key \"" + excerpt(key) + "\"",
                                               pointerHere()));
         m_member = &(*level.value)[key];
         *m_member = nullptr;
@@ -224,14 +178,14 @@ public:
     {
         std::string message;
         if (ex.id == 406) {
-            message = "number " + printable(lastToken, 40) + " is out of range (not a finite double)";
+            message = "number " + excerpt(lastToken, 40) + " is out of range (not a finite double)";
         } else {
             // "[json.exception.parse_error.101] parse error at line 1, column 5: <what>"
             std::string what = ex.what();
             const std::size_t columnAt = what.find(", column ");
             const std::size_t colon = what.find(": ", columnAt == std::string::npos ? 0 : columnAt);
             message = colon == std::string::npos ? what : what.substr(colon + 2);
-            message = printable(message);
+            message = excerpt(message);
         }
         // `position` counts the characters read. A token the lexer could not
         // finish ("last read: ...") is located at the character that broke it;
@@ -328,8 +282,8 @@ private:
 JsonText parseJsonText(std::string_view text)
 {
     JsonText result;
-    if (std::optional<Diagnostic> refused = prescan(text)) {
-        result.diagnostics.push_back(std::move(*refused));
+    if (Check refused = prescan(text); !refused) {
+        result.diagnostics = refused.takeDiagnostics();
         return result;
     }
     DocumentBuilder builder(text);
@@ -427,30 +381,29 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
 
 } // namespace
 
-SceneReadResult parseScene(std::string_view text)
+Result<Scene> parseScene(std::string_view text)
 {
-    SceneReadResult result;
+    Diagnostics diagnostics;
     try {
         detail::JsonText parsed = detail::parseJsonText(text);
-        result.diagnostics = std::move(parsed.diagnostics);
-        if (!parsed.document || hasErrors(result.diagnostics))
-            return result;
-        if (!checkFormatAndMigrate(*parsed.document, result.diagnostics))
-            return result;
+        diagnostics = std::move(parsed.diagnostics);
+        if (!parsed.document || hasErrors(diagnostics))
+            return diagnostics;
+        if (!checkFormatAndMigrate(*parsed.document, diagnostics))
+            return diagnostics;
         Scene scene;
-        detail::readSceneDocument(*parsed.document, scene, result.diagnostics);
-        if (!hasErrors(result.diagnostics))
-            result.scene = std::move(scene);
+        detail::readSceneDocument(*parsed.document, scene, diagnostics);
+        if (hasErrors(diagnostics))
+            return diagnostics;
+        return {std::move(scene), std::move(diagnostics)};
     } catch (const std::bad_alloc&) {
-        result.scene.reset();
-        result.diagnostics.push_back(makeError("out of memory while reading the scene"));
+        diagnostics.push_back(makeError("out of memory while reading the scene"));
     } catch (const std::exception& e) {
         // The reader checks every type before it converts; reaching this is a bug,
         // but the promise is a diagnostic, never an exception.
-        result.scene.reset();
-        result.diagnostics.push_back(makeError(std::string("internal error while reading: ") + e.what()));
+        diagnostics.push_back(makeError(std::string("internal error while reading: ") + e.what()));
     }
-    return result;
+    return diagnostics;
 }
 
 } // namespace regio::model

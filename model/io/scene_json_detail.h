@@ -2,6 +2,7 @@
 // Internals of the scene file shared by scene_json*.cpp and scene_file.cpp:
 // not part of the model's public API (include model/io/scene_json.h instead).
 #include "model/diagnostic.h"
+#include "model/io/json_pointer.h"
 #include "model/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -41,10 +42,6 @@ JsonText parseJsonText(std::string_view text);
 
 // 1-based line and column (in UTF-8 code points) of a byte offset.
 void setTextPosition(std::string_view text, std::size_t offset, Diagnostic& diagnostic);
-
-// Appends "/" + token to a JSON pointer, escaping "~" and "/" (RFC 6901).
-std::string appendPointer(const std::string& pointer, std::string_view token);
-std::string appendPointer(const std::string& pointer, std::size_t index);
 
 // The value of an integer, or of a float with an integral value that a double
 // holds exactly (JSON Schema counts 3.0 as an integer); empty otherwise.

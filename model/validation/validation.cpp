@@ -9,14 +9,6 @@ namespace regio::model {
 
 namespace detail {
 
-std::string materialPointer(size_t m) { return "/materials/" + std::to_string(m); }
-std::string objectPointer(size_t o) { return "/objects/" + std::to_string(o); }
-std::string partPointer(size_t o, size_t p) { return objectPointer(o) + "/parts/" + std::to_string(p); }
-std::string facePointer(size_t o, size_t p, size_t f)
-{
-    return partPointer(o, p) + "/faces/" + std::to_string(f);
-}
-std::string regionPointer(size_t r) { return "/regions/" + std::to_string(r); }
 
 std::vector<std::string> partPath(const ValidationContext& context, size_t o, size_t p)
 {
@@ -70,14 +62,14 @@ void validateIds(ValidationContext& context)
     auto pointerOf = [](const Use& use) {
         const std::string kind = use.kind;
         if (kind == "material")
-            return detail::materialPointer(use.a);
+            return materialPointer(use.a);
         if (kind == "region")
-            return detail::regionPointer(use.a);
+            return regionPointer(use.a);
         if (kind == "object")
-            return detail::objectPointer(use.a);
+            return objectPointer(use.a);
         if (kind == "part")
-            return detail::partPointer(use.a, use.b);
-        return detail::facePointer(use.a, use.b, use.c);
+            return partPointer(use.a, use.b);
+        return facePointer(use.a, use.b, use.c);
     };
     const Scene& scene = context.scene;
     auto idPathOf = [&](const Use& use) -> std::vector<std::string> {
@@ -145,7 +137,7 @@ void validateMaterials(ValidationContext& context)
     const Scene& scene = context.scene;
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material& material = scene.materials[m];
-        const std::string pointer = detail::materialPointer(m);
+        const std::string pointer = materialPointer(m);
         const std::string name = "material " + detail::quoted(material.id);
         for (int c = 0; c < 3; ++c) {
             const double r = material.reflectance[c];
@@ -201,7 +193,7 @@ void validateMaterialUse(ValidationContext& context)
                 if (!partMaterial)
                     context.error("part " + detail::quoted(part.id) + " uses the unknown material " +
                                       detail::quoted(part.material),
-                                  detail::partPointer(o, p) + "/material", detail::partPath(context, o, p));
+                                  partPointer(o, p) + "/material", detail::partPath(context, o, p));
             }
             for (size_t f = 0; f < part.faces.size(); ++f) {
                 const Face& face = part.faces[f];
@@ -211,12 +203,12 @@ void validateMaterialUse(ValidationContext& context)
                     if (!material)
                         context.error("face " + detail::quoted(face.id) + " uses the unknown material " +
                                           detail::quoted(face.material),
-                                      detail::facePointer(o, p, f) + "/material",
+                                      facePointer(o, p, f) + "/material",
                                       detail::facePath(context, o, p, f));
                 } else if (part.material.empty()) {
                     context.error("face " + detail::quoted(face.id) + " has no material, and neither has part " +
                                       detail::quoted(part.id) + ": give one to either",
-                                  detail::facePointer(o, p, f), detail::facePath(context, o, p, f));
+                                  facePointer(o, p, f), detail::facePath(context, o, p, f));
                 }
                 anyEmitter = anyEmitter || emits(material);
             }

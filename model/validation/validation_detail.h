@@ -5,6 +5,7 @@
 // model/validation/validation.h instead.
 #include "model/diagnostic.h"
 #include "model/geometry/geometry.h"
+#include "model/io/json_pointer.h"
 #include "model/scene.h"
 
 #include <span>
@@ -49,13 +50,7 @@ struct ValidationContext {
     }
 };
 
-// JSON pointers by position (positions in the model equal positions in the file).
-std::string materialPointer(size_t m);
-std::string objectPointer(size_t o);
-std::string partPointer(size_t o, size_t p);
-std::string facePointer(size_t o, size_t p, size_t f);
-std::string regionPointer(size_t r);
-
+// Id paths (outside in) of a part and a face, for diagnostics.
 std::vector<std::string> partPath(const ValidationContext& context, size_t o, size_t p);
 std::vector<std::string> facePath(const ValidationContext& context, size_t o, size_t p, size_t f);
 

@@ -4,15 +4,6 @@
 
 namespace regio::solver {
 
-namespace {
-
-// A strip width far beyond any room: every fragment becomes one strip, i.e. a
-// handful of triangles, and one element per patch. The BSP trees come before
-// meshing and do not read these settings.
-constexpr double kCoarsestPatchSize = 1.0e9;
-
-} // namespace
-
 BspFigures figuresOf(const RegionStats& stats)
 {
     return {stats.inputFaces, stats.fragments, stats.splits, stats.depth, stats.nodes};
@@ -42,35 +33,28 @@ SceneBspFigures bspFiguresOf(const PreparedScene& prepared, RegionsMode mode)
     return out;
 }
 
-PrepareOptions bspStageOptions(const BspFiguresOptions& options)
+model::Result<SceneBspFigures> computeBspFigures(const model::Scene& scene, const BspFiguresOptions& options)
 {
     PrepareOptions prepare;
     prepare.regions = options.regions;
     prepare.autoRegionPatchThreshold = options.autoRegionPatchThreshold;
-    if (options.regions != RegionsMode::Auto)
-        prepare.patchSize = kCoarsestPatchSize;
-    prepare.elementsPerPatch = 1;
-    return prepare;
-}
-
-BspFiguresResult computeBspFigures(const model::Scene& scene, const BspFiguresOptions& options)
-{
-    BspFiguresResult result;
-    PrepareResult prepared = prepareScene(scene, bspStageOptions(options));
-    result.diagnostics = std::move(prepared.diagnostics);
-    if (prepared.scene)
-        result.figures = bspFiguresOf(*prepared.scene, options.regions);
-    return result;
+    model::Result<PreparedScene> prepared = prepareBsp(scene, prepare);
+    if (!prepared)
+        return model::Result<SceneBspFigures>::failureOf(prepared);
+    model::Diagnostics warnings = prepared.takeDiagnostics();
+    return {bspFiguresOf(*prepared, options.regions), std::move(warnings)};
 }
 
 BspComparison compareWithSingleBsp(const model::Scene& scene)
 {
     const auto start = std::chrono::steady_clock::now();
     BspComparison out;
-    BspFiguresResult authored = computeBspFigures(scene, {RegionsMode::Authored});
-    out.authored = std::move(authored.figures);
-    out.diagnostics = std::move(authored.diagnostics);
-    out.baseline = computeBspFigures(scene, {RegionsMode::None}).figures;
+    model::Result<SceneBspFigures> authored = computeBspFigures(scene, {RegionsMode::Authored});
+    out.diagnostics = authored.takeDiagnostics();
+    if (authored)
+        out.authored = std::move(*authored);
+    if (model::Result<SceneBspFigures> baseline = computeBspFigures(scene, {RegionsMode::None}))
+        out.baseline = std::move(*baseline);
     out.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

@@ -5,11 +5,11 @@
 // for the authored regions and for the single-BSP baseline.
 //
 // The numbers are never recomputed here: they are read from a PreparedScene
-// built by prepareScene(), the solver's own preparation, so the editor's
-// figures are the solver's (and the `bsp` figures of `regio-solve solve
-// --report`, which reads the same PrepareStats). Only the meshing step, which
-// the figures do not depend on, is made cheap when it cannot change them.
+// built by the solver's own preparation (its stages up to the BSP trees), so
+// the editor's figures are the solver's (and the `bsp` figures of
+// `regio-solve solve --report`, which reads the same PrepareStats).
 #include "model/diagnostic.h"
+#include "model/result.h"
 #include "model/scene.h"
 #include "solver/prepare/prepare.h"
 #include "solver/prepare/prepared_scene.h"
@@ -58,22 +58,13 @@ SceneBspFigures bspFiguresOf(const PreparedScene& prepared, RegionsMode mode);
 
 struct BspFiguresOptions {
     RegionsMode regions = RegionsMode::Authored;
-    int autoRegionPatchThreshold = PrepareOptions{}.autoRegionPatchThreshold;
+    int autoRegionPatchThreshold = kAutoRegionPatchThreshold;
 };
 
-struct BspFiguresResult {
-    std::optional<SceneBspFigures> figures; // empty when the scene cannot be prepared
-    model::Diagnostics diagnostics;         // prepareScene's
-};
-
-// The preparation options that give the same BSP trees as `options` with as
-// little meshing as possible. Authored and None modes do not depend on the
-// patch size, so the mesh is made as coarse as it goes; Auto mode chooses its
-// boxes by estimated patch counts and keeps the scene's patch size.
-PrepareOptions bspStageOptions(const BspFiguresOptions& options);
-
-// Prepares the scene (with bspStageOptions) and reads its figures.
-BspFiguresResult computeBspFigures(const model::Scene& scene, const BspFiguresOptions& options = {});
+// Prepares the scene up to its BSP trees (prepareBsp: no mesh, which the
+// figures do not depend on) and reads its figures. Auto mode estimates its
+// boxes' patches with the scene's patch size.
+model::Result<SceneBspFigures> computeBspFigures(const model::Scene& scene, const BspFiguresOptions& options = {});
 
 // The author's regions beside the single-BSP baseline (RegionsMode::None),
 // what the BSP order editor shows after each change.

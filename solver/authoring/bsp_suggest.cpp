@@ -1,6 +1,7 @@
 #include "solver/authoring/bsp_suggest.h"
 
 #include "model/geometry/region_clip.h"
+#include "solver/prepare/partition.h"
 #include "solver/prepare/regional_tree.h"
 
 #include <algorithm>
@@ -11,9 +12,9 @@ namespace regio::solver {
 
 namespace {
 
-// The builder's partition of a subset by a root (bsp_tree.cpp), step for step:
-// the same classification, the same split, the same sliver rule, so the
-// simulated tree is the tree buildRegionBsp will build.
+// The builder's tree, simulated: the same partition rule (partition.h) and,
+// where the order already decides, the same root, so the simulated tree is
+// the tree buildRegionBsp will build.
 class GreedyBuilder {
 public:
     GreedyBuilder(const std::vector<Properties>& properties, std::span<const char> listable,
@@ -34,27 +35,12 @@ public:
 
         const size_t rootIndex = chooseRoot(polygons);
         const Plane plane = planeOf(polygons[rootIndex]);
-        std::vector<FacePolygon> front, back;
-        std::vector<Vec3> frontLoop, backLoop;
-        for (size_t i = 0; i < polygons.size(); ++i) {
-            FacePolygon& p = polygons[i];
-            const model::Side side = i == rootIndex ? model::Side::On : model::classifyPolygon(p.loop, plane);
-            switch (side) {
-            case model::Side::On: ++m_figures.fragments; break;
-            case model::Side::Front: front.push_back(std::move(p)); break;
-            case model::Side::Back: back.push_back(std::move(p)); break;
-            case model::Side::Spanning:
-                ++m_figures.splits;
-                model::splitPolygon(p.loop, plane, frontLoop, backLoop);
-                keepPiece(frontLoop, p.face, front);
-                keepPiece(backLoop, p.face, back);
-                break;
-            }
-        }
-        polygons.clear();
-        polygons.shrink_to_fit();
-        build(std::move(back), depth + 1);
-        build(std::move(front), depth + 1);
+        BspPartition parts = partitionAtRoot(std::move(polygons), rootIndex, plane);
+        m_figures.fragments += int(parts.on.size());
+        m_figures.splits += parts.splits;
+        parts.on.clear();
+        build(std::move(parts.back), depth + 1);
+        build(std::move(parts.front), depth + 1);
     }
 
     GreedyOrder result() &&
@@ -67,13 +53,6 @@ public:
 
 private:
     const Plane& planeOf(const FacePolygon& p) const { return m_properties[size_t(p.face)].plane; }
-
-    static void keepPiece(const std::vector<Vec3>& loop, int face, std::vector<FacePolygon>& into)
-    {
-        std::vector<Vec3> clean = cleanConvexLoop(loop);
-        if (clean.size() >= 3 && model::polygonArea(clean) > model::kAreaEpsilon)
-            into.push_back({std::move(clean), face});
-    }
 
     // What the builder will pick (lowest rank; ties: the earlier polygon),
     // where the order already decides; otherwise the greedy choice, which then
@@ -171,16 +150,12 @@ model::Result<std::vector<BspOrderSuggestion>> suggestFor(const model::Scene& sc
     std::vector<BspOrderSuggestion> out;
     if (wanted.empty())
         return out;
-    PrepareResult prepared = prepareScene(scene, bspStageOptions({RegionsMode::Authored}));
-    if (!prepared.scene) {
-        for (const model::Diagnostic& d : prepared.diagnostics)
-            if (d.isError())
-                return d;
-        return model::makeError("the scene cannot be prepared");
-    }
-    const PreparedScene& s = *prepared.scene;
-    std::vector<std::vector<FacePolygon>> cells = regionCellPolygons(scene, s);
-
+    model::Result<BspInput> input = prepareBspInput(scene);
+    if (!input)
+        return model::Result<std::vector<BspOrderSuggestion>>::failureOf(input);
+    // The greedy simulation starts from the same cells the builder gets.
+    std::vector<std::vector<FacePolygon>> cells = input->cells;
+    const PreparedScene s = buildBsps(std::move(*input));
     std::vector<char> listable(s.faces.size(), 0);
     std::vector<Vec3> positions;
     for (int r : wanted) {
@@ -206,26 +181,6 @@ model::Result<std::vector<BspOrderSuggestion>> suggestFor(const model::Scene& sc
 }
 
 } // namespace
-
-std::vector<std::vector<FacePolygon>> regionCellPolygons(const model::Scene& scene, const PreparedScene& prepared)
-{
-    std::vector<FacePolygon> polygons;
-    for (size_t i = 0; i < prepared.faces.size(); ++i) {
-        const InputFace& info = prepared.faces[i];
-        if (!(info.area > 0.0))
-            continue;
-        const model::Part& part = scene.objects[size_t(info.object)].parts[size_t(info.part)];
-        std::vector<Vec3> loop = model::loopPositions(part.vertices, part.faces[size_t(info.faceInPart)].loop);
-        const Plane& plane = prepared.properties[i].plane;
-        for (Vec3& v : loop)
-            v -= plane.normal * plane.signedDistance(v);
-        std::vector<Vec3> clean = cleanConvexLoop(loop);
-        if (clean.size() >= 3)
-            polygons.push_back({std::move(clean), int(i)});
-    }
-    const RegionalTree tree{prepared.regionalNodes, prepared.regionalRoot};
-    return assignToCells(tree, std::move(polygons), int(prepared.regions.size()));
-}
 
 GreedyOrder greedyBspOrder(const std::vector<Properties>& properties, std::vector<FacePolygon> polygons,
                            std::span<const char> listable, const SuggestOptions& options)

@@ -59,23 +59,16 @@ model::Result<BspOrderSuggestion> suggestBspOrder(const model::Scene& scene, con
 model::Result<std::vector<BspOrderSuggestion>> suggestBspOrders(const model::Scene& scene,
                                                                 const SuggestOptions& options = {});
 
-// --- The pieces, for region proposals and tests ------------------------------
-
-// The polygons that enter each region's BSP build in `prepared` (which must
-// be prepareScene's output for `scene`): every face with area, projected onto
-// its plane as preparation does, pushed down the prepared regional tree.
-// (prepare.cpp keeps its face collection private; this mirrors it, and the
-// tests check that rebuilding from these polygons gives prepareScene's trees.)
-std::vector<std::vector<FacePolygon>> regionCellPolygons(const model::Scene& scene, const PreparedScene& prepared);
+// --- The greedy order of one region, for tests ----------------------------------
 
 struct GreedyOrder {
     std::vector<int> faces; // face indices (PreparedScene::faces) in rank order
     BspFigures figures;     // of the tree that order builds
 };
 
-// The greedy order for one region's polygons. `listable[face]` says which
-// faces may be named in the order; plane and face identity come from
-// `properties`.
+// The greedy order for one region's polygons (a cell of prepareBspInput).
+// `listable[face]` says which faces may be named in the order; plane and face
+// identity come from `properties`.
 GreedyOrder greedyBspOrder(const std::vector<Properties>& properties, std::vector<FacePolygon> polygons,
                            std::span<const char> listable, const SuggestOptions& options = {});
 

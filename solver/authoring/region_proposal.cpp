@@ -3,6 +3,7 @@
 #include "model/geometry/region_clip.h"
 #include "model/validation/validation.h"
 #include "solver/prepare/auto_regions.h"
+#include "solver/prepare/prepare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -195,14 +196,6 @@ private:
     double m_patchSize;
 };
 
-bool validLoop(const model::Part& part, const model::Face& face)
-{
-    if (face.loop.size() < 3)
-        return false;
-    return std::all_of(face.loop.begin(), face.loop.end(),
-                       [&](int v) { return v >= 0 && size_t(v) < part.vertices.size(); });
-}
-
 // The face lies in one of the six planes of the bounds.
 bool onBoundary(const std::vector<Vec3>& loop, const Box3& bounds)
 {
@@ -223,36 +216,31 @@ model::Scene withRegions(const model::Scene& scene, std::vector<model::Region> r
     return out;
 }
 
-RegionProposal proposeRegions(const model::Scene& scene, const RegionProposalOptions& options)
+model::Result<RegionProposal> proposeRegions(const model::Scene& scene, const RegionProposalOptions& options)
 {
     RegionProposal proposal;
     double patchSize = options.patchSize.value_or(scene.solver.patchSize);
     if (!(patchSize > 0.0) || !std::isfinite(patchSize))
         patchSize = 1.0; // preparation below reports the bad setting
 
-    // Usable faces, their bounds, then shell and items.
+    // The faces as preparation sees them, by part; then shell and items.
+    model::Result<FaceSet> faces = collectFaces(scene);
+    if (!faces)
+        return model::Result<RegionProposal>::failureOf(faces);
+    const Box3& bounds = faces->bounds;
+    if (bounds.empty)
+        return proposal;
     struct PartFaces {
+        int object = -1, part = -1;
         std::vector<std::vector<Vec3>> loops;
     };
     std::vector<PartFaces> parts;
-    Box3 bounds;
-    for (const model::Object& object : scene.objects)
-        for (const model::Part& part : object.parts) {
-            PartFaces faces;
-            for (const model::Face& face : part.faces) {
-                if (!validLoop(part, face))
-                    continue;
-                std::vector<Vec3> loop = model::loopPositions(part.vertices, face.loop);
-                if (model::polygonArea(loop) < model::kMinFaceArea)
-                    continue;
-                for (const Vec3& v : loop)
-                    bounds.extend(v);
-                faces.loops.push_back(std::move(loop));
-            }
-            parts.push_back(std::move(faces));
-        }
-    if (bounds.empty)
-        return proposal;
+    for (FacePolygon& polygon : faces->polygons) {
+        const InputFace& face = faces->faces[size_t(polygon.face)];
+        if (parts.empty() || parts.back().object != face.object || parts.back().part != face.part)
+            parts.push_back({face.object, face.part, {}});
+        parts.back().loops.push_back(std::move(polygon.loop));
+    }
 
     std::vector<std::vector<Vec3>> shell;
     std::vector<Item> items;
@@ -290,27 +278,24 @@ RegionProposal proposeRegions(const model::Scene& scene, const RegionProposalOpt
         region.max = boxes[i].max;
         proposed.regions.push_back(region);
     }
-    std::optional<model::Diagnostic> suggestError;
     if (options.suggestOrders) {
         auto suggestions = suggestBspOrders(proposed, options.suggest);
-        if (suggestions) {
-            for (size_t r = 0; r < proposed.regions.size(); ++r)
-                proposed.regions[r].bspOrder = (*suggestions)[r].order;
-        } else {
-            suggestError = suggestions.error();
-        }
+        if (!suggestions)
+            return model::Result<RegionProposal>::failureOf(suggestions);
+        for (size_t r = 0; r < proposed.regions.size(); ++r)
+            proposed.regions[r].bspOrder = (*suggestions)[r].order;
     }
     for (const model::Object& object : proposed.objects)
         for (const model::Part& part : object.parts)
             if (model::partStraddlesRegions(proposed, part))
                 proposal.straddlingParts.push_back(part.id);
-    BspFiguresResult figures = computeBspFigures(proposed);
-    proposal.diagnostics = std::move(figures.diagnostics);
-    if (suggestError && !model::hasErrors(proposal.diagnostics))
-        proposal.diagnostics.push_back(*suggestError);
-    proposal.figures = std::move(figures.figures);
+    model::Result<SceneBspFigures> figures = computeBspFigures(proposed);
+    if (!figures)
+        return model::Result<RegionProposal>::failureOf(figures);
+    model::Diagnostics warnings = figures.takeDiagnostics();
+    proposal.figures = std::move(*figures);
     proposal.regions = std::move(proposed.regions);
-    return proposal;
+    return {std::move(proposal), std::move(warnings)};
 }
 
 } // namespace regio::solver

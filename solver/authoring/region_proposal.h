@@ -27,6 +27,7 @@
 // regional tree always separates them; each gets the suggested BSP order of
 // its contents (solver/authoring/bsp_suggest.h).
 #include "model/diagnostic.h"
+#include "model/result.h"
 #include "model/scene.h"
 #include "solver/authoring/bsp_figures.h"
 #include "solver/authoring/bsp_suggest.h"
@@ -39,7 +40,7 @@ namespace regio::solver {
 
 struct RegionProposalOptions {
     // Same meaning and default as PrepareOptions::autoRegionPatchThreshold.
-    int patchThreshold = PrepareOptions{}.autoRegionPatchThreshold;
+    int patchThreshold = kAutoRegionPatchThreshold;
     std::optional<double> patchSize; // empty = the scene's solver settings
     // When a group above the threshold has no gap: true cuts it where the
     // plane crosses the fewest parts, false keeps it whole (no part but the
@@ -58,11 +59,12 @@ struct RegionProposal {
     // candidates for model::clipPartToRegions.
     std::vector<std::string> straddlingParts;
     // The scene with these regions, prepared by the solver (authored mode).
-    std::optional<SceneBspFigures> figures;
-    model::Diagnostics diagnostics; // preparation problems; an empty proposal when the scene has errors
+    SceneBspFigures figures;
 };
 
-RegionProposal proposeRegions(const model::Scene& scene, const RegionProposalOptions& options = {});
+// Refused when the scene cannot be prepared (its errors). A scene without
+// faces gives an empty proposal.
+model::Result<RegionProposal> proposeRegions(const model::Scene& scene, const RegionProposalOptions& options = {});
 
 // The scene with `regions` instead of its own (for previews and comparisons).
 model::Scene withRegions(const model::Scene& scene, std::vector<model::Region> regions);

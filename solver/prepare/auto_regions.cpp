@@ -1,6 +1,6 @@
 #include "solver/prepare/auto_regions.h"
 
-#include "solver/prepare/regional_tree.h"
+#include "solver/prepare/partition.h"
 
 #include <algorithm>
 
@@ -32,27 +32,8 @@ void split(std::vector<FacePolygon> polygons, const Box3& box, int threshold, do
     const double position =
         std::clamp(*middle, box.min[axis] + 0.25 * size[axis], box.max[axis] - 0.25 * size[axis]);
 
-    const Plane plane = separatingPlane(axis, position);
     std::vector<FacePolygon> front, back;
-    std::vector<Vec3> frontLoop, backLoop;
-    for (FacePolygon& p : polygons) {
-        switch (model::classifyPolygon(p.loop, plane)) {
-        case model::Side::Front: front.push_back(std::move(p)); break;
-        case model::Side::Back: back.push_back(std::move(p)); break;
-        case model::Side::On:
-            (model::polygonNormal(p.loop)[axis] >= 0.0 ? front : back).push_back(std::move(p));
-            break;
-        case model::Side::Spanning:
-            model::splitPolygon(p.loop, plane, frontLoop, backLoop);
-            if (auto clean = cleanConvexLoop(frontLoop); clean.size() >= 3)
-                front.push_back({std::move(clean), p.face});
-            if (auto clean = cleanConvexLoop(backLoop); clean.size() >= 3)
-                back.push_back({std::move(clean), p.face});
-            break;
-        }
-    }
-    polygons.clear();
-    polygons.shrink_to_fit();
+    partitionAtSeparatingPlane(std::move(polygons), axis, position, back, front);
     Box3 backBox = box, frontBox = box;
     backBox.max[axis] = position;
     frontBox.min[axis] = position;

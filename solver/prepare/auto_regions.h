@@ -10,6 +10,10 @@
 
 namespace regio::solver {
 
+// The default patch-count threshold of automatic regions (and of the
+// editor's region proposals): a box holding more estimated patches is split.
+inline constexpr int kAutoRegionPatchThreshold = 256;
+
 // Patches a polygon of this area is expected to give at this patch size: two
 // triangles per patchSize^2 square, at least one.
 double estimatedPatches(double area, double patchSize);

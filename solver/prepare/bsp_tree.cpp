@@ -1,5 +1,7 @@
 #include "solver/prepare/bsp_tree.h"
 
+#include "solver/prepare/partition.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -23,31 +25,11 @@ public:
         stats.depth = std::max(stats.depth, depth);
         ++stats.nodes;
 
-        size_t rootIndex = 0;
-        for (size_t i = 1; i < polygons.size(); ++i)
-            if (rankOf(polygons[i]) < rankOf(polygons[rootIndex]))
-                rootIndex = i;
+        const size_t rootIndex = lowestRank(polygons, m_rank);
         const Plane plane = m_scene.properties[size_t(polygons[rootIndex].face)].plane;
-
-        std::vector<FacePolygon> on, front, back;
-        std::vector<Vec3> frontLoop, backLoop;
-        for (size_t i = 0; i < polygons.size(); ++i) {
-            FacePolygon& p = polygons[i];
-            const model::Side side = i == rootIndex ? model::Side::On : model::classifyPolygon(p.loop, plane, m_eps);
-            switch (side) {
-            case model::Side::On: on.push_back(std::move(p)); break;
-            case model::Side::Front: front.push_back(std::move(p)); break;
-            case model::Side::Back: back.push_back(std::move(p)); break;
-            case model::Side::Spanning:
-                ++stats.splits;
-                model::splitPolygon(p.loop, plane, frontLoop, backLoop, m_eps);
-                keepPiece(frontLoop, p.face, front);
-                keepPiece(backLoop, p.face, back);
-                break;
-            }
-        }
-        polygons.clear();
-        polygons.shrink_to_fit();
+        BspPartition parts = partitionAtRoot(std::move(polygons), rootIndex, plane, m_eps);
+        stats.splits += parts.splits;
+        std::vector<FacePolygon>& on = parts.on;
 
         // Fragments facing along the node plane first (BspNode::forward*).
         std::stable_partition(on.begin(), on.end(), [&](const FacePolygon& p) {
@@ -69,24 +51,14 @@ public:
         stats.fragments += int(on.size());
         on.clear();
 
-        const int backChild = build(std::move(back), depth + 1);
-        const int frontChild = build(std::move(front), depth + 1);
+        const int backChild = build(std::move(parts.back), depth + 1);
+        const int frontChild = build(std::move(parts.front), depth + 1);
         m_scene.nodes[size_t(index)].back = backChild;
         m_scene.nodes[size_t(index)].front = frontChild;
         return index;
     }
 
 private:
-    int rankOf(const FacePolygon& p) const { return m_rank[size_t(p.face)]; }
-
-    void keepPiece(const std::vector<Vec3>& loop, int face, std::vector<FacePolygon>& into) const
-    {
-        std::vector<Vec3> clean = cleanConvexLoop(loop, m_eps);
-        // Splits within eps of a vertex leave slivers of no area: drop them.
-        if (clean.size() >= 3 && model::polygonArea(clean) > model::kAreaEpsilon)
-            into.push_back({std::move(clean), face});
-    }
-
     void addFragment(const FacePolygon& p, int node)
     {
         Region& region = m_scene.regions[size_t(m_region)];

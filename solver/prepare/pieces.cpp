@@ -1,6 +1,7 @@
 #include "solver/prepare/pieces.h"
 
 #include "solver/prepare/face_polygon.h"
+#include "solver/prepare/partition.h"
 #include "solver/prepare/regional_tree.h"
 
 #include <glm/geometric.hpp>
@@ -41,14 +42,6 @@ struct CutKeyHash {
         return size_t(h ^ (h >> 29));
     }
 };
-
-// The builders' sliver rule (bsp_tree.cpp keepPiece, regional_tree.cpp
-// assign): a side of a split face is kept only if something of area is left.
-bool keepSide(std::vector<Vec3>& loop)
-{
-    loop = cleanConvexLoop(loop);
-    return loop.size() >= 3 && model::polygonArea(loop) > model::kAreaEpsilon;
-}
 
 class PieceBuilder {
 public:
@@ -171,36 +164,41 @@ private:
         back.push_back(std::move(b));
     }
 
-    // The face polygon spans `plane`: cut it as the builders did and the
-    // element pieces with it; if neither side is kept, the pieces are lost.
+    // The face polygon spans `plane`: cut it as the builders did
+    // (partition.h) and the element pieces with it; if neither side is
+    // kept, the pieces are lost.
     template <class Recurse>
     void spanning(const std::vector<Vec3>& face, std::vector<Work> pieces, const Plane& plane, int planeKey,
                   int frontChild, int backChild, Recurse&& recurse)
     {
-        std::vector<Vec3> frontLoop, backLoop;
-        model::splitPolygon(face, plane, frontLoop, backLoop, kEps);
-        const bool keepFront = keepSide(frontLoop);
-        const bool keepBack = keepSide(backLoop);
+        spanning(splitAcross(face, plane, kEps), std::move(pieces), plane, planeKey, frontChild, backChild, recurse);
+    }
+
+    template <class Recurse>
+    void spanning(PlaneSplit sides, std::vector<Work> pieces, const Plane& plane, int planeKey, int frontChild,
+                  int backChild, Recurse&& recurse)
+    {
+        const bool keepFront = !sides.front.empty();
+        const bool keepBack = !sides.back.empty();
         if (keepFront && keepBack) {
             std::vector<Work> front, back;
             for (const Work& piece : pieces)
                 split(piece, plane, planeKey, front, back);
             pieces.clear();
-            recurse(backChild, std::move(backLoop), std::move(back));
-            recurse(frontChild, std::move(frontLoop), std::move(front));
+            recurse(backChild, std::move(sides.back), std::move(back));
+            recurse(frontChild, std::move(sides.front), std::move(front));
         } else if (keepFront) {
             // The builder dropped the back sliver: the face lives on in front
             // only, and so do its elements (uncut).
-            recurse(frontChild, std::move(frontLoop), std::move(pieces));
+            recurse(frontChild, std::move(sides.front), std::move(pieces));
         } else if (keepBack) {
-            recurse(backChild, std::move(backLoop), std::move(pieces));
+            recurse(backChild, std::move(sides.back), std::move(pieces));
         } else {
             lose(pieces);
         }
     }
 
-    // regional_tree.cpp assign(): classify, a polygon on the plane goes to
-    // the side its normal faces, a spanning one is clipped.
+    // The regional tree, as assignToCells took the face (partition.h).
     void pushRegional(int index, std::vector<Vec3> face, std::vector<Work> pieces)
     {
         const RegionalNode& node = m_scene.regionalNodes[size_t(index)];
@@ -208,21 +206,19 @@ private:
             pushBsp(m_scene.regions[size_t(node.region)].bspRoot, std::move(face), std::move(pieces));
             return;
         }
-        const Plane plane = separatingPlane(node.axis, node.position);
-        switch (model::classifyPolygon(face, plane)) {
+        PlaneSplit sides;
+        switch (routeAtSeparatingPlane(face, node.axis, node.position, sides)) {
         case model::Side::Front: pushRegional(node.front, std::move(face), std::move(pieces)); return;
         case model::Side::Back: pushRegional(node.back, std::move(face), std::move(pieces)); return;
-        case model::Side::On: {
-            const int side = model::polygonNormal(face)[node.axis] >= 0.0 ? node.front : node.back;
-            pushRegional(side, std::move(face), std::move(pieces));
-            return;
-        }
-        case model::Side::Spanning:
-            spanning(face, std::move(pieces), plane, planeKey(plane), node.front, node.back,
+        case model::Side::On: return; // never: routeAtSeparatingPlane picks a side
+        case model::Side::Spanning: {
+            const Plane plane = separatingPlane(node.axis, node.position);
+            spanning(std::move(sides), std::move(pieces), plane, planeKey(plane), node.front, node.back,
                      [&](int child, std::vector<Vec3> f, std::vector<Work> p) {
                          pushRegional(child, std::move(f), std::move(p));
                      });
             return;
+        }
         }
     }
 
@@ -234,8 +230,9 @@ private:
         return false;
     }
 
-    // bsp_tree.cpp Builder::build(): the face stops at the node holding its
-    // fragments (its plane), otherwise goes front, back or is split.
+    // The BSP tree, as the builder took the face (partition.h): it stops at
+    // the node holding its fragments (its plane), otherwise goes front, back
+    // or is split.
     void pushBsp(int index, std::vector<Vec3> face, std::vector<Work> pieces)
     {
         if (index < 0) {

@@ -1,16 +1,14 @@
 #include "solver/prepare/prepare.h"
 
-#include "solver/prepare/auto_regions.h"
+#include "model/geometry/winged_edge.h"
+#include "model/io/json_pointer.h"
 #include "solver/prepare/bsp_tree.h"
 #include "solver/prepare/meshing.h"
 #include "solver/prepare/pieces.h"
-#include "solver/prepare/regional_tree.h"
-#include "model/geometry/winged_edge.h"
+#include "solver/settings.h"
 
 #include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
-#include <cmath>
 #include <string>
 #include <unordered_map>
 
@@ -18,17 +16,30 @@ namespace regio::solver {
 
 namespace {
 
-std::string facePointer(size_t o, size_t p, size_t f)
+Box3 regionBox(const model::Region& region)
 {
-    return "/objects/" + std::to_string(o) + "/parts/" + std::to_string(p) + "/faces/" + std::to_string(f);
+    Box3 box;
+    box.extend(glm::min(region.min, region.max));
+    box.extend(glm::max(region.min, region.max));
+    return box;
 }
 
-// Reads every face of the scene into the face table, its Properties and its
-// polygon (projected onto its plane, so everything downstream is exactly planar).
-bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<FacePolygon>& polygons,
-                  model::Diagnostics& diagnostics)
+} // namespace
+
+PrepareOptions prepareOptionsFor(const model::SolverSettings& settings, int autoRegionPatchThreshold)
 {
-    bool ok = true;
+    PrepareOptions options;
+    options.regions = settings.regions;
+    options.autoRegionPatchThreshold = autoRegionPatchThreshold;
+    options.patchSize = settings.patchSize;
+    options.elementsPerPatch = settings.elementsPerPatch;
+    return options;
+}
+
+model::Result<FaceSet> collectFaces(const model::Scene& scene)
+{
+    FaceSet out;
+    model::Diagnostics diagnostics;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const model::Object& object = scene.objects[o];
         for (size_t p = 0; p < object.parts.size(); ++p) {
@@ -39,7 +50,7 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
             for (size_t f = 0; f < part.faces.size(); ++f) {
                 const model::Face& face = part.faces[f];
                 const int index = int(out.faces.size());
-                const std::string pointer = facePointer(o, p, f);
+                const std::string pointer = model::facePointer(o, p, f);
                 const std::vector<std::string> idPath{object.id, part.id, face.id};
 
                 InputFace info;
@@ -57,7 +68,6 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
                         "face '" + face.id + "' has no material the solver can use (unknown material id '" +
                             (face.material.empty() ? part.material : face.material) + "')",
                         pointer + "/material", idPath));
-                    ok = false;
                 } else {
                     props.reflectance = material->reflectance;
                     props.emission = material->emission;
@@ -71,9 +81,9 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
                     loop = model::loopPositions(part.vertices, face.loop);
                 const double area = indicesValid ? model::polygonArea(loop) : 0.0;
                 if (!indicesValid || area <= model::kAreaEpsilon) {
-                    diagnostics.push_back(model::makeWarning("face '" + face.id +
-                                                                 "' has no area; it is left out of the solution",
-                                                             pointer + "/loop", idPath));
+                    diagnostics.push_back(model::makeWarning(
+                        "face '" + face.id + "' has no area; it is left out of the solution", pointer + "/loop",
+                        idPath));
                     out.faces.push_back(std::move(info));
                     out.properties.push_back(props);
                     continue;
@@ -82,122 +92,122 @@ bool collectFaces(const model::Scene& scene, PreparedScene& out, std::vector<Fac
                 for (Vec3& v : loop)
                     v -= props.plane.normal * props.plane.signedDistance(v);
                 if (!model::isConvex(loop, props.plane.normal)) {
-                    diagnostics.push_back(model::makeError(
-                        "face '" + face.id + "' is not convex; the solver needs convex faces (split it)",
-                        pointer + "/loop", idPath));
-                    ok = false;
+                    diagnostics.push_back(
+                        model::makeError("face '" + face.id + "' is not convex; the solver needs convex faces (split it)",
+                                         pointer + "/loop", idPath));
                 }
                 info.area = area;
                 std::vector<Vec3> clean = cleanConvexLoop(loop);
-                if (ok && clean.size() >= 3) {
+                if (clean.size() >= 3) {
                     for (const Vec3& v : clean)
                         out.bounds.extend(v);
                     info.polygon = clean;
-                    polygons.push_back({std::move(clean), index});
-                    ++out.stats.inputFaces;
+                    out.polygons.push_back({std::move(clean), index});
                 }
                 out.faces.push_back(std::move(info));
                 out.properties.push_back(props);
             }
         }
     }
-    return ok;
+    if (model::hasErrors(diagnostics))
+        return diagnostics;
+    return {std::move(out), std::move(diagnostics)};
 }
 
-struct RegionSetup {
-    std::vector<Box3> boxes;
-    std::vector<std::string> ids;
-    std::vector<const std::vector<std::string>*> orders; // per region
-};
-
-Box3 regionBox(const model::Region& region)
+model::Result<RegionLayout> layOutRegions(const model::Scene& scene, const FaceSet& faces, RegionsMode mode,
+                                          double patchSize, int autoRegionPatchThreshold)
 {
-    Box3 box;
-    box.extend(glm::min(region.min, region.max));
-    box.extend(glm::max(region.min, region.max));
-    return box;
-}
-
-} // namespace
-
-PrepareResult prepareScene(const model::Scene& scene, const PrepareOptions& options)
-{
-    PrepareResult result;
-    PreparedScene out;
-    out.patchSize = options.patchSize.value_or(scene.solver.patchSize);
-    out.elementsPerPatch = options.elementsPerPatch.value_or(scene.solver.elementsPerPatch);
-    if (!(out.patchSize > 0.0) || !std::isfinite(out.patchSize)) {
-        result.diagnostics.push_back(model::makeError("the patch size must be a positive length", "/solver/patchSize"));
-        return result;
-    }
-    if (out.elementsPerPatch < 1) {
-        result.diagnostics.push_back(
-            model::makeError("the element/patch ratio must be at least 1", "/solver/elementsPerPatch"));
-        return result;
-    }
-
-    std::vector<FacePolygon> polygons;
-    if (!collectFaces(scene, out, polygons, result.diagnostics))
-        return result;
-
     // One priority list for modes that do not use the authored regions: the
     // authored orders one after the other, so the author's sorting still counts.
     std::vector<std::string> combinedOrder;
     for (const model::Region& region : scene.regions)
         combinedOrder.insert(combinedOrder.end(), region.bspOrder.begin(), region.bspOrder.end());
 
-    RegionSetup setup;
-    if (options.regions == RegionsMode::Authored && !scene.regions.empty()) {
-        for (const model::Region& region : scene.regions) {
-            setup.boxes.push_back(regionBox(region));
-            setup.ids.push_back(region.id);
-            setup.orders.push_back(&region.bspOrder);
-        }
-    } else if (options.regions == RegionsMode::Auto) {
-        setup.boxes = autoRegionBoxes(polygons, out.bounds, options.autoRegionPatchThreshold, out.patchSize);
-        for (size_t i = 0; i < setup.boxes.size(); ++i) {
-            setup.ids.push_back("auto-" + std::to_string(i + 1));
-            setup.orders.push_back(&combinedOrder);
-        }
+    RegionLayout out;
+    std::vector<Box3> boxes;
+    auto add = [&](std::string id, const Box3& box, const std::vector<std::string>& order) {
+        Region region;
+        region.id = std::move(id);
+        region.box = box;
+        out.regions.push_back(std::move(region));
+        out.orders.push_back(order);
+        boxes.push_back(box);
+    };
+    if (mode == RegionsMode::Authored && !scene.regions.empty()) {
+        for (const model::Region& region : scene.regions)
+            add(region.id, regionBox(region), region.bspOrder);
+    } else if (mode == RegionsMode::Auto) {
+        const std::vector<Box3> automatic =
+            autoRegionBoxes(faces.polygons, faces.bounds, autoRegionPatchThreshold, patchSize);
+        for (size_t i = 0; i < automatic.size(); ++i)
+            add("auto-" + std::to_string(i + 1), automatic[i], combinedOrder);
     }
-    if (setup.boxes.empty()) {
-        setup.boxes.push_back(out.bounds);
-        setup.ids.push_back("scene");
-        setup.orders.push_back(&combinedOrder);
-    }
+    if (boxes.empty())
+        add("scene", faces.bounds, combinedOrder);
 
-    // §5.2: the regional tree.
-    RegionalTreeBuild tree = buildRegionalTree(setup.boxes);
+    RegionalTreeBuild tree = buildRegionalTree(boxes);
     if (!tree.ok()) {
         std::string names;
         for (int r : tree.inseparable)
-            names += (names.empty() ? "'" : ", '") + setup.ids[size_t(r)] + "'";
-        result.diagnostics.push_back(model::makeError(
-            "regions " + names +
-                " cannot be separated by axis-aligned planes (they overlap or interlock); move or split one of them",
-            "/regions/" + std::to_string(tree.inseparable.front()), {setup.ids[size_t(tree.inseparable.front())]}));
-        return result;
+            names += (names.empty() ? "'" : ", '") + out.regions[size_t(r)].id + "'";
+        const size_t first = size_t(tree.inseparable.front());
+        return model::makeError("regions " + names +
+                                    " cannot be separated by axis-aligned planes (they overlap or interlock); "
+                                    "move or split one of them",
+                                model::regionPointer(first), {out.regions[first].id});
     }
-    out.regionalNodes = std::move(tree.tree.nodes);
-    out.regionalRoot = tree.tree.root;
-    for (size_t r = 0; r < setup.boxes.size(); ++r) {
-        Region region;
-        region.id = setup.ids[r];
-        region.box = setup.boxes[r];
-        out.regions.push_back(region);
-    }
+    out.tree = std::move(tree.tree);
+    return out;
+}
 
-    // Face assignment with clipping at the separating planes, then §5.3.
-    RegionalTree cellsTree{out.regionalNodes, out.regionalRoot};
-    std::vector<std::vector<FacePolygon>> cells =
-        assignToCells(cellsTree, std::move(polygons), int(out.regions.size()));
+model::Result<BspInput> prepareBspInput(const model::Scene& scene, const PrepareOptions& options)
+{
+    SettingsOverrides overrides;
+    overrides.patchSize = options.patchSize;
+    overrides.elementsPerPatch = options.elementsPerPatch;
+    const model::SolverSettings settings = resolveSettings(scene.solver, overrides);
+    if (model::Check meshable = checkMeshSettings(settings); !meshable)
+        return meshable.error();
+
+    model::Result<FaceSet> faces = collectFaces(scene);
+    if (!faces)
+        return model::Result<BspInput>::failureOf(faces);
+    model::Diagnostics warnings = faces.takeDiagnostics();
+    model::Result<RegionLayout> layout =
+        layOutRegions(scene, *faces, options.regions, settings.patchSize, options.autoRegionPatchThreshold);
+    if (!layout) {
+        warnings.push_back(layout.error());
+        return warnings;
+    }
+    BspInput out;
+    out.patchSize = settings.patchSize;
+    out.elementsPerPatch = settings.elementsPerPatch;
+    out.layout = std::move(*layout);
+    out.faces = std::move(*faces);
+    out.cells = assignToCells(out.layout.tree, out.faces.polygons, int(out.layout.regions.size()));
+    return {std::move(out), std::move(warnings)};
+}
+
+PreparedScene buildBsps(BspInput input)
+{
+    PreparedScene out;
+    out.faces = std::move(input.faces.faces);
+    out.properties = std::move(input.faces.properties);
+    out.bounds = input.faces.bounds;
+    out.stats.inputFaces = int(input.faces.polygons.size());
+    input.faces.polygons.clear();
+    out.patchSize = input.patchSize;
+    out.elementsPerPatch = input.elementsPerPatch;
+    out.regionalNodes = std::move(input.layout.tree.nodes);
+    out.regionalRoot = input.layout.tree.root;
+    out.regions = std::move(input.layout.regions);
 
     std::unordered_map<std::string, int> faceIndex;
     for (size_t i = 0; i < out.faces.size(); ++i)
         faceIndex.emplace(out.faces[i].id, int(i));
     std::vector<int> rank(out.faces.size());
     for (size_t r = 0; r < out.regions.size(); ++r) {
-        const std::vector<std::string>& order = *setup.orders[r];
+        const std::vector<std::string>& order = input.layout.orders[r];
         // Unlisted faces follow the listed ones in scene order; ids that name
         // no face are ignored here (validation reports them).
         for (size_t i = 0; i < rank.size(); ++i)
@@ -205,14 +215,31 @@ PrepareResult prepareScene(const model::Scene& scene, const PrepareOptions& opti
         for (size_t i = order.size(); i-- > 0;)
             if (auto it = faceIndex.find(order[i]); it != faceIndex.end())
                 rank[size_t(it->second)] = int(i);
-        out.stats.regionPieces += int(cells[r].size());
-        buildRegionBsp(out, int(r), std::move(cells[r]), rank);
+        out.stats.regionPieces += int(input.cells[r].size());
+        buildRegionBsp(out, int(r), std::move(input.cells[r]), rank);
         const RegionStats& stats = out.regions[r].stats;
         out.stats.fragments += stats.fragments;
         out.stats.splits += stats.splits;
         out.stats.maxDepth = std::max(out.stats.maxDepth, stats.depth);
     }
+    return out;
+}
 
+model::Result<PreparedScene> prepareBsp(const model::Scene& scene, const PrepareOptions& options)
+{
+    model::Result<BspInput> input = prepareBspInput(scene, options);
+    if (!input)
+        return model::Result<PreparedScene>::failureOf(input);
+    model::Diagnostics warnings = input.takeDiagnostics();
+    return {buildBsps(std::move(*input)), std::move(warnings)};
+}
+
+model::Result<PreparedScene> prepareScene(const model::Scene& scene, const PrepareOptions& options)
+{
+    model::Result<PreparedScene> prepared = prepareBsp(scene, options);
+    if (!prepared)
+        return prepared;
+    PreparedScene& out = *prepared;
     // §5.4, §5.5 on the input faces, then the elements cut into the pieces
     // the painter paints per BSP node (solver/prepare/pieces.h).
     meshFaces(out);
@@ -221,9 +248,7 @@ PrepareResult prepareScene(const model::Scene& scene, const PrepareOptions& opti
     out.stats.elements = int(out.elements.size());
     for (const Element& e : out.elements)
         out.stats.area += e.area;
-
-    result.scene = std::move(out);
-    return result;
+    return prepared;
 }
 
 } // namespace regio::solver

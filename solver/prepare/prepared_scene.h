@@ -52,13 +52,13 @@
 // Precision: positions are double (the BSP splits and the strip triangulation
 // need it); the rasteriser converts to float in the shooter's frame.
 //
-// Growing the mesh: adaptive subdivision (§5.7, not built yet) is to split
-// elements at run time: append the new elements and vertices, regroup the
-// element array by patch (Patch::firstElement/elementCount stay ranges), let
-// the per-element solver arrays follow the same permutation
-// (Shooting::replaceElementState), rebuild InputFace::elements and then the
-// pieces with buildPieces (solver/prepare/pieces.h), which recomputes everything the
-// painter needs from the elements.
+// Growing the mesh: adaptive subdivision (§5.7, solver/shooting/) splits
+// elements at run time: it builds a new PreparedScene whose element array is
+// grouped by patch again (Patch::firstElement/elementCount stay ranges), the
+// per-element solver arrays follow the same order
+// (Shooting::replaceElementState), InputFace::elements is rebuilt and then
+// the pieces with buildPieces (solver/prepare/pieces.h), which recomputes
+// everything the painter needs from the elements.
 #include "model/geometry/geometry.h"
 #include "model/types.h"
 
@@ -112,10 +112,6 @@ struct Fragment {
     int region = -1;
     int firstPoint = 0;    // polygon in PreparedScene::fragmentPoints, CCW seen
     int pointCount = 0;    // from its properties' plane normal
-    // Unused since meshing is per input face (see the top of this file):
-    // always 0. Kept so that code reading them still compiles.
-    int firstPatch = 0;
-    int patchCount = 0;
     double area = 0.0;
 };
 
@@ -123,7 +119,6 @@ struct Fragment {
 struct Patch {
     std::array<int, 3> vertices{}; // indices into PreparedScene::vertices, CCW from the normal
     int properties = -1;
-    int fragment = -1;             // always -1: patches belong to the face, not to a fragment
     int node = -1;                 // = node of its first element (a patch may span several nodes)
     int firstElement = 0;          // its elements: [firstElement, firstElement + elementCount)
     int elementCount = 0;
@@ -160,10 +155,6 @@ struct BspNode {
     // The pieces painted at this node, grouped [F solid | F open | O open | O solid].
     int firstPiece = 0, pieceCount = 0, forwardPieces = 0;
     int forwardSolidPieces = 0, oppositeSolidPieces = 0;
-    // Unused since elements are painted as pieces (always 0); kept so that
-    // code reading them still compiles.
-    int firstPatch = 0, patchCount = 0, forwardPatches = 0;
-    int firstElement = 0, elementCount = 0, forwardElements = 0;
 };
 
 struct RegionStats {

@@ -1,5 +1,7 @@
 #include "solver/prepare/regional_tree.h"
 
+#include "solver/prepare/partition.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -83,30 +85,8 @@ void assign(const RegionalTree& tree, int index, std::vector<FacePolygon> polygo
             cell.push_back(std::move(p));
         return;
     }
-    const Plane plane = separatingPlane(node.axis, node.position);
     std::vector<FacePolygon> front, back;
-    std::vector<model::Vec3> frontLoop, backLoop;
-    for (FacePolygon& p : polygons) {
-        switch (model::classifyPolygon(p.loop, plane)) {
-        case model::Side::Front: front.push_back(std::move(p)); break;
-        case model::Side::Back: back.push_back(std::move(p)); break;
-        case model::Side::On:
-            (model::polygonNormal(p.loop)[node.axis] >= 0.0 ? front : back).push_back(std::move(p));
-            break;
-        case model::Side::Spanning: {
-            model::splitPolygon(p.loop, plane, frontLoop, backLoop);
-            frontLoop = cleanConvexLoop(frontLoop);
-            backLoop = cleanConvexLoop(backLoop);
-            if (frontLoop.size() >= 3 && model::polygonArea(frontLoop) > model::kAreaEpsilon)
-                front.push_back({frontLoop, p.face});
-            if (backLoop.size() >= 3 && model::polygonArea(backLoop) > model::kAreaEpsilon)
-                back.push_back({backLoop, p.face});
-            break;
-        }
-        }
-    }
-    polygons.clear();
-    polygons.shrink_to_fit();
+    partitionAtSeparatingPlane(std::move(polygons), node.axis, node.position, back, front);
     assign(tree, node.back, std::move(back), cells);
     assign(tree, node.front, std::move(front), cells);
 }

@@ -8,7 +8,7 @@ namespace regio::solver {
 
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
-Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, VisibilityMode mode)
+Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode)
     : m_scene(scene)
     , m_hemicube(hemicubeResolution)
     , m_visibility(scene, m_hemicube, mode)

@@ -14,9 +14,10 @@
 // (1 - rho_j) P_i F_ij, what it reflects back into the unshot pool, rho_j P_i
 // F_ij, and what lands on no receiver, P_i (1 - sum_j F_ij): the sky of an open
 // scene and the backs of surfaces.
+#include "solver/prepare/prepared_scene.h"
+#include "solver/shooting/energy_balance.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/item_buffer.h"
-#include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/visibility.h"
 
 #include <atomic>
@@ -25,24 +26,13 @@
 
 namespace regio::solver {
 
-// Rec. 709 luminance weights: "most unshot power" and the ambient term are
-// judged by brightness, not by one channel.
-double luminance(const Rgb& c);
-
-struct EnergyBalance {
-    Rgb emitted{0.0};
-    Rgb absorbed{0.0};
-    Rgb unshot{0.0};
-    Rgb escaped{0.0};
-};
-
 enum class ShotResult { Shot, NothingToShoot, Cancelled };
 
 class Shooting {
 public:
     // Keeps a reference to `scene`, which must outlive it; starts with every
     // element's radiosity and unshot radiosity at its emission.
-    Shooting(const PreparedScene& scene, int hemicubeResolution, VisibilityMode mode);
+    Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode);
 
     // One shot of the patch with the most unshot power. The hemicube is
     // rendered without any lock; `applyLock`, when given, is held only while

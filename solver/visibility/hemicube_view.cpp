@@ -12,7 +12,7 @@ ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
 }
 
 std::optional<HemicubeView> renderHemicubeView(const PreparedScene& scene, int patch, int resolution,
-                                               VisibilityMode mode)
+                                               model::Visibility mode)
 {
     if (patch < 0 || static_cast<size_t>(patch) >= scene.patches.size())
         return std::nullopt;

@@ -33,6 +33,6 @@ struct HemicubeView {
 
 // Empty when `patch` is out of range. `resolution` as Hemicube (rounded up to even).
 std::optional<HemicubeView> renderHemicubeView(const PreparedScene& scene, int patch, int resolution,
-                                               VisibilityMode mode);
+                                               model::Visibility mode);
 
 } // namespace regio::solver

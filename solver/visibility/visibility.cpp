@@ -10,18 +10,13 @@
 
 namespace regio::solver {
 
-const char* visibilityModeName(VisibilityMode mode)
-{
-    return mode == VisibilityMode::Painter ? "painter" : "zbuffer";
-}
-
 namespace {
 // How often (in elements) a render looks at the cancel flag: a relaxed
 // atomic load is cheap, but not per element.
 constexpr int kCancelCheckInterval = 256;
 } // namespace
 
-Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, VisibilityMode mode)
+Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode)
     : m_scene(scene)
     , m_hemicube(hemicube)
     , m_mode(mode)
@@ -29,7 +24,7 @@ Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, Vis
 {
 }
 
-ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == VisibilityMode::ZBuffer); }
+ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == model::Visibility::ZBuffer); }
 
 void Visibility::prepareFrame(const ShooterFrame& frame)
 {
@@ -174,7 +169,7 @@ bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std
         return cancelled;
     };
 
-    if (m_mode == VisibilityMode::Painter) {
+    if (m_mode == model::Visibility::Painter) {
         forEachNodeBackToFront(
             m_scene, frame.origin,
             [&](int region) {

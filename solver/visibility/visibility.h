@@ -22,6 +22,7 @@
 // Both share one per-shooter vertex cache: each vertex is transformed into the
 // shooter's frame and outcoded once per shooter, whatever number of elements
 // share it (docs/performance.md).
+#include "model/scene.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
@@ -32,8 +33,6 @@
 #include <vector>
 
 namespace regio::solver {
-
-enum class VisibilityMode { Painter, ZBuffer };
 
 // The painter's order inside one BSP node: calls op(begin, end, receives)
 // for the node's piece ranges in paint order (see the top of this file and
@@ -56,8 +55,6 @@ inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
     }
 }
 
-const char* visibilityModeName(VisibilityMode mode);
-
 struct VisibilityStats {
     std::int64_t regionsCulled = 0;  // whole regions skipped (behind the shooter plane)
     // Counted per painted piece triangle (solver/prepare/pieces.h); most elements are
@@ -70,9 +67,9 @@ class Visibility {
 public:
     // Keeps a reference to `scene` and `hemicube`; both must outlive it. The
     // scene may grow (adaptive subdivision): caches follow its vertex count.
-    Visibility(const PreparedScene& scene, const Hemicube& hemicube, VisibilityMode mode);
+    Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode);
 
-    VisibilityMode mode() const { return m_mode; }
+    model::Visibility mode() const { return m_mode; }
     // The item buffer this visibility writes; it has a depth plane in z-buffer mode.
     ItemBuffer makeBuffer() const;
 
@@ -94,7 +91,7 @@ private:
 
     const PreparedScene& m_scene;
     const Hemicube& m_hemicube;
-    VisibilityMode m_mode;
+    model::Visibility m_mode;
     HemicubeRaster m_raster;
     ShooterFrame m_frame;
     Plane m_shooterPlane;

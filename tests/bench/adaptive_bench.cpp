@@ -51,12 +51,12 @@ const model::Scene& scene()
 {
     static const model::Scene s = [] {
         const std::string path = std::string(REGIO_SOURCE_DIR) + "/resources/scenes/two-lights-room.json";
-        model::SceneReadResult read = model::loadSceneFile(path);
-        if (!read.scene || model::hasErrors(model::validateScene(*read.scene))) {
+        model::Result<model::Scene> read = model::loadSceneFile(path);
+        if (!read.ok() || model::hasErrors(model::validateScene(*read))) {
             std::fprintf(stderr, "cannot use %s\n", path.c_str());
             std::exit(2);
         }
-        return *read.scene;
+        return *read;
     }();
     return s;
 }
@@ -98,11 +98,11 @@ void fullSolve(benchmark::State& state)
         SolverOptions options;
         options.adaptive = adaptive; // the rest is the scene's own settings
         auto built = Solver::create(scene(), options);
-        if (!built.solver) {
+        if (!built.ok()) {
             state.SkipWithError("the scene could not be prepared");
             return;
         }
-        Solver& s = *built.solver;
+        Solver& s = **built;
         // Exactly maxIterations shots (step() ignores the convergence test), so
         // both runs shoot equally often.
         const auto start = Clock::now();
@@ -129,15 +129,15 @@ void rounds(benchmark::State& state)
 {
     const model::Scene& sc = scene();
     for (auto _ : state) {
-        PrepareResult prepared = prepareScene(sc, PrepareOptions{});
-        if (!prepared.scene) {
+        model::Result<PreparedScene> prepared = prepareScene(sc, PrepareOptions{});
+        if (!prepared.ok()) {
             state.SkipWithError("the scene could not be prepared");
             return;
         }
-        PreparedScene active = std::move(*prepared.scene);
+        PreparedScene active = std::move(*prepared);
         const int initial = static_cast<int>(active.elements.size());
         AdaptiveRefinement refinement(active, sc.solver.adaptive);
-        Shooting shooting(active, sc.solver.hemicube, VisibilityMode::Painter);
+        Shooting shooting(active, sc.solver.hemicube, model::Visibility::Painter);
         const RefinementPolicy policy;
         double splitSeconds = 0.0, handOverSeconds = 0.0, firstHandOver = -1.0, lastHandOver = 0.0;
         int lastElements = initial;

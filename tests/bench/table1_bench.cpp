@@ -46,8 +46,8 @@ int elementCount(const model::Scene& scene, double patchSize, int elementsPerPat
     PrepareOptions options;
     options.patchSize = patchSize;
     options.elementsPerPatch = elementsPerPatch;
-    const PrepareResult r = prepareScene(scene, options);
-    return r.scene ? static_cast<int>(r.scene->elements.size()) : 0;
+    const model::Result<PreparedScene> r = prepareScene(scene, options);
+    return r.ok() ? static_cast<int>(r->elements.size()) : 0;
 }
 
 // The element/patch ratio and patch size whose mesh comes closest to the
@@ -57,12 +57,12 @@ const Setup& setup()
     static const Setup s = [] {
         Setup s;
         const std::string path = std::string(REGIO_SOURCE_DIR) + "/resources/scenes/two-lights-room.json";
-        model::SceneReadResult read = model::loadSceneFile(path);
-        if (!read.scene || model::hasErrors(model::validateScene(*read.scene))) {
+        model::Result<model::Scene> read = model::loadSceneFile(path);
+        if (!read.ok() || model::hasErrors(model::validateScene(*read))) {
             std::fprintf(stderr, "cannot use %s\n", path.c_str());
             std::exit(2);
         }
-        s.scene = *read.scene;
+        s.scene = *read;
         // The mesher makes k x k elements per patch, so the ratios tried are
         // squares; the patch size is scanned in 1 % steps (element counts jump
         // with the BSP splits, bisection would miss the closest).
@@ -102,7 +102,7 @@ std::map<std::pair<std::string, int>, std::vector<double>>& measured()
     return m;
 }
 
-void table1(benchmark::State& state, VisibilityMode mode)
+void table1(benchmark::State& state, model::Visibility mode)
 {
     const Setup& s = setup();
     const int resolution = static_cast<int>(state.range(0));
@@ -118,12 +118,12 @@ void table1(benchmark::State& state, VisibilityMode mode)
         // mesh between shots and time the refinement too (adaptive_bench does).
         options.adaptive = false;
         auto built = Solver::create(s.scene, options);
-        if (!built.solver) {
+        if (!built.ok()) {
             state.SkipWithError("the scene could not be prepared");
             return;
         }
         const auto start = std::chrono::steady_clock::now();
-        const int done = built.solver->step(kIterations);
+        const int done = (*built)->step(kIterations);
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         state.SetIterationTime(seconds);
         if (done != kIterations) {
@@ -131,7 +131,7 @@ void table1(benchmark::State& state, VisibilityMode mode)
             return;
         }
     }
-    measured()[{visibilityModeName(mode), resolution}].push_back(seconds);
+    measured()[{model::visibilityName(mode), resolution}].push_back(seconds);
     state.counters["elements"] = s.elements;
     state.counters["s_per_100"] = seconds;
     state.counters["paper_over_ours"] = paperSeconds(resolution) / seconds;
@@ -144,8 +144,8 @@ double median(std::vector<double> v)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-void painter(benchmark::State& state) { table1(state, VisibilityMode::Painter); }
-void zbuffer(benchmark::State& state) { table1(state, VisibilityMode::ZBuffer); }
+void painter(benchmark::State& state) { table1(state, model::Visibility::Painter); }
+void zbuffer(benchmark::State& state) { table1(state, model::Visibility::ZBuffer); }
 
 } // namespace
 

@@ -53,9 +53,9 @@ private slots:
         document.push(new RemoveObject(&document, "crate"));
         QVERIFY(autosave.saveNow());
         QVERIFY(QFile::exists(autosave.recoveryPath()));
-        const model::SceneReadResult read = model::loadSceneFile(autosave.recoveryPath().toStdString());
-        QVERIFY(read.scene);
-        QVERIFY(*read.scene == document.scene());
+        const model::Result<model::Scene> read = model::loadSceneFile(autosave.recoveryPath().toStdString());
+        QVERIFY(read.ok());
+        QVERIFY(*read == document.scene());
     }
 
     void theTimerAutosavesOnlyWhenSomethingChanged()

@@ -346,19 +346,19 @@ private slots:
         const model::Scene room = test_scenes::furnishedRoom(1);
         solver::RegionProposalOptions options;
         options.suggestOrders = false;
-        const model::Scene scene = solver::withRegions(room, solver::proposeRegions(room, options).regions);
+        const model::Scene scene = solver::withRegions(room, solver::proposeRegions(room, options)->regions);
         QVERIFY(scene.regions.size() > 1);
         QElapsedTimer clock;
         clock.start();
         const BspAnalysis analysis = analyseBsp(scene);
         const qint64 analysing = clock.elapsed();
-        const solver::BspFiguresResult authored = solver::computeBspFigures(scene, {solver::RegionsMode::Authored});
-        const solver::BspFiguresResult single = solver::computeBspFigures(scene, {solver::RegionsMode::None});
-        QVERIFY(analysis.authored && authored.figures && analysis.baseline && single.figures);
-        QCOMPARE(analysis.authored->fragments, authored.figures->fragments);
-        QCOMPARE(analysis.authored->splits, authored.figures->splits);
-        QCOMPARE(analysis.authored->maxDepth, authored.figures->maxDepth);
-        QCOMPARE(analysis.baseline->fragments, single.figures->fragments);
+        const model::Result<solver::SceneBspFigures> authored = solver::computeBspFigures(scene, {solver::RegionsMode::Authored});
+        const model::Result<solver::SceneBspFigures> single = solver::computeBspFigures(scene, {solver::RegionsMode::None});
+        QVERIFY(analysis.authored && authored.ok() && analysis.baseline && single.ok());
+        QCOMPARE(analysis.authored->fragments, authored->fragments);
+        QCOMPARE(analysis.authored->splits, authored->splits);
+        QCOMPARE(analysis.authored->maxDepth, authored->maxDepth);
+        QCOMPARE(analysis.baseline->fragments, single->fragments);
         QVERIFY(analysis.authored->fragments < analysis.baseline->fragments);
 
         // In the editor: an edit returns before the figures are recomputed.
@@ -396,7 +396,7 @@ private slots:
             const model::Scene room = test_scenes::furnishedRoom(1);
             solver::RegionProposalOptions options;
             options.suggestOrders = false;
-            scene = solver::withRegions(room, solver::proposeRegions(room, options).regions);
+            scene = solver::withRegions(room, solver::proposeRegions(room, options)->regions);
         } else {
             scene = test::loadSample("two-lights-room.json");
         }

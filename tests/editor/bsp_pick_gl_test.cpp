@@ -139,8 +139,8 @@ private slots:
         PainterPlayback* playback = bsp->playback();
         QVERIFY(playback->active());
         auto created = solver::Solver::create(document->scene());
-        QVERIFY(created.solver);
-        const solver::PreparedScene& prepared = created.solver->prepared();
+        QVERIFY(created.ok());
+        const solver::PreparedScene& prepared = (*created)->prepared();
         const model::Vec3 eye = eyeAbovePick(*hit, glm::length(prepared.bounds.size()));
         QVERIFY(glm::length(playback->eye() - eye) < 1e-12);
         // The eye is off the surface, on the side the click came from.

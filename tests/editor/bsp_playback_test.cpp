@@ -58,10 +58,10 @@ void compareWithSolver(const solver::PainterOrder& order, const solver::Prepared
 
 std::unique_ptr<solver::Solver> solverFor(const model::Scene& scene)
 {
-    solver::Solver::CreateResult created = solver::Solver::create(scene);
-    if (!created.solver)
+    model::Result<std::unique_ptr<solver::Solver>> created = solver::Solver::create(scene);
+    if (!created.ok())
         qFatal("the solver refused the scene");
-    return std::move(created.solver);
+    return std::move(*created);
 }
 
 } // namespace
@@ -120,7 +120,7 @@ private slots:
     void onAHundredObjectRoomInRegionsThePlaybackIsTheSolversTraversal()
     {
         const model::Scene room = test_scenes::furnishedRoom(1);
-        const model::Scene scene = solver::withRegions(room, solver::proposeRegions(room).regions);
+        const model::Scene scene = solver::withRegions(room, solver::proposeRegions(room)->regions);
         MainWindowOptions options;
         options.persistent = false;
         options.interactive = false;

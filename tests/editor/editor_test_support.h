@@ -16,10 +16,10 @@ namespace regio::editor::test {
 
 inline model::Scene loadSample(const std::string& name)
 {
-    model::SceneReadResult read = model::loadSceneFile(std::string(REGIO_SOURCE_DIR) + "/resources/scenes/" + name);
-    if (!read.scene)
+    model::Result<model::Scene> read = model::loadSceneFile(std::string(REGIO_SOURCE_DIR) + "/resources/scenes/" + name);
+    if (!read.ok())
         qFatal("cannot load the sample scene %s", name.c_str());
-    return *read.scene;
+    return *read;
 }
 
 inline QString samplePath(const char* name)

@@ -137,8 +137,8 @@ private slots:
         QTemporaryDir dir;
         const QString saved = dir.filePath(QStringLiteral("stress.json"));
         QVERIFY(document->save(saved));
-        const model::SceneReadResult read = model::loadSceneFile(saved.toStdString());
-        QVERIFY(read.scene && *read.scene == document->scene());
+        const model::Result<model::Scene> read = model::loadSceneFile(saved.toStdString());
+        QVERIFY(read.ok() && *read == document->scene());
         // A solve of the edited scene still works, then a reset leaves no worker behind.
         preview->run();
         QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Finished, 60000);

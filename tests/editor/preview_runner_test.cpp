@@ -99,7 +99,7 @@ private slots:
         scene.solver.adaptive.anchoring = anchoring;
         // Both solve the same file.
         const std::string path = (scratch / "scene.json").string();
-        QVERIFY(!model::saveSceneFile(scene, path));
+        QVERIFY(model::saveSceneFile(scene, path).ok());
         PreviewRunner runner;
         runner.start(scene, iterations);
         QVERIFY(waitForFinal(runner));
@@ -463,10 +463,10 @@ private slots:
         QVERIFY(!preview->exportForBatch(batch, &command));
         QVERIFY(command.startsWith(QStringLiteral("regio-solve solve ")));
         QVERIFY(command.contains(batch));
-        const model::SceneReadResult read = model::loadSceneFile(batch.toStdString());
-        QVERIFY(read.scene);
-        QCOMPARE(read.scene->solver, applyPreset(window->document()->scene().solver, SolverPreset::Final));
-        QVERIFY(read.scene->objects == window->document()->scene().objects);
+        const model::Result<model::Scene> read = model::loadSceneFile(batch.toStdString());
+        QVERIFY(read.ok());
+        QCOMPARE(read->solver, applyPreset(window->document()->scene().solver, SolverPreset::Final));
+        QVERIFY(read->objects == window->document()->scene().objects);
         // The command's arguments are regio-solve's (a short run instead of the final one).
         std::vector<std::string> args;
         for (const QString& a : batchArguments(batch, preview->display()))

@@ -51,7 +51,7 @@ private slots:
             QCOMPARE(p.visibility, model::Visibility::ZBuffer);
             QCOMPARE(p.regions, model::RegionsMode::Auto);
             QCOMPARE(p.adaptive.anchoring, false);
-            QVERIFY2(!model::checkSolverSettings(p), "a preset must be valid");
+            QVERIFY2(model::checkSolverSettings(p).ok(), "a preset must be valid");
         }
         QCOMPARE(presetOf(draft), std::optional(SolverPreset::Draft));
         QCOMPARE(presetOf(final), std::optional(SolverPreset::Final));
@@ -174,11 +174,11 @@ private slots:
         QVERIFY(run.ok);
         solver::PrepareOptions options;
         options.regions = scene.solver.regions;
-        const solver::PrepareResult prepared = solver::prepareScene(scene, options);
-        QVERIFY(prepared.scene);
-        QCOMPARE(run.stats.patches, prepared.scene->stats.patches);
-        QCOMPARE(run.stats.elements, prepared.scene->stats.elements);
-        QCOMPARE(run.regions, int(prepared.scene->regions.size()));
+        const model::Result<solver::PreparedScene> prepared = solver::prepareScene(scene, options);
+        QVERIFY(prepared.ok());
+        QCOMPARE(run.stats.patches, prepared->stats.patches);
+        QCOMPARE(run.stats.elements, prepared->stats.elements);
+        QCOMPARE(run.regions, int(prepared->regions.size()));
         QCOMPARE(run.settings.hemicube, scene.solver.hemicube);
         const QString text = describeDryRun(run);
         QVERIFY2(text.contains(QString::number(run.stats.patches)), qPrintable(text));

@@ -187,11 +187,11 @@ private slots:
         RegionFixture a(scene);
         QVERIFY(a.regions->proposeRegions());
         const solver::RegionProposal& proposal = *a.regions->proposal();
-        const solver::BspFiguresResult expected =
+        const model::Result<solver::SceneBspFigures> expected =
             solver::computeBspFigures(solver::withRegions(scene, proposal.regions));
-        QVERIFY(expected.figures && proposal.figures);
-        QCOMPARE(proposal.figures->fragments, expected.figures->fragments);
-        QVERIFY(a.regions->dock()->proposalLabel()->text().contains(QString::number(expected.figures->fragments)));
+        QVERIFY(expected.ok());
+        QCOMPARE(proposal.figures.fragments, expected->fragments);
+        QVERIFY(a.regions->dock()->proposalLabel()->text().contains(QString::number(expected->fragments)));
     }
 
     void discardingAProposalLeavesTheSceneAndHistoryAlone()

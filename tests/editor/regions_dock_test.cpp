@@ -126,16 +126,16 @@ private slots:
         const model::Scene scene = test::loadSample("two-lights-room.json");
         RegionFixture f(scene);
         QVERIFY(f.regions->figures()->waitUntilCurrent());
-        const solver::BspFiguresResult expected = solver::computeBspFigures(scene);
-        QVERIFY(expected.figures);
-        QCOMPARE(expected.figures->regions.size(), scene.regions.size());
-        for (const solver::RegionBspFigures& region : expected.figures->regions)
+        const model::Result<solver::SceneBspFigures> expected = solver::computeBspFigures(scene);
+        QVERIFY(expected.ok());
+        QCOMPARE(expected->regions.size(), scene.regions.size());
+        for (const solver::RegionBspFigures& region : expected->regions)
             QCOMPARE(f.dock()->cellText(region.id, RegionsDock::FragmentsColumn),
                      QString::number(region.figures.fragments));
-        QVERIFY(f.dock()->summary()->text().contains(QString::number(expected.figures->fragments)));
-        const solver::BspFiguresResult single =
+        QVERIFY(f.dock()->summary()->text().contains(QString::number(expected->fragments)));
+        const model::Result<solver::SceneBspFigures> single =
             solver::computeBspFigures(scene, {model::RegionsMode::None, 256});
-        QVERIFY(f.dock()->summary()->text().contains(QString::number(single.figures->fragments)));
+        QVERIFY(f.dock()->summary()->text().contains(QString::number(single->fragments)));
     }
 
     void theFragmentCountsFollowAnEditAfterAPause()
@@ -147,9 +147,9 @@ private slots:
         QVERIFY(f.document.push(new RemoveRegion(&f.document, first.id)));
         QVERIFY(f.regions->figures()->stale());
         QVERIFY(f.regions->figures()->waitUntilCurrent());
-        const solver::BspFiguresResult expected = solver::computeBspFigures(f.document.scene());
-        QVERIFY(expected.figures);
-        for (const solver::RegionBspFigures& region : expected.figures->regions)
+        const model::Result<solver::SceneBspFigures> expected = solver::computeBspFigures(f.document.scene());
+        QVERIFY(expected.ok());
+        for (const solver::RegionBspFigures& region : expected->regions)
             QCOMPARE(f.dock()->cellText(region.id, RegionsDock::FragmentsColumn),
                      QString::number(region.figures.fragments));
     }
@@ -183,7 +183,7 @@ private slots:
     void editsOnAHundredObjectRoomLeaveTheFiguresToTheWorkerThread()
     {
         model::Scene room = test_scenes::furnishedRoom(1);
-        room.regions = solver::proposeRegions(room).regions;
+        room.regions = solver::proposeRegions(room)->regions;
         QVERIFY(room.regions.size() > 10);
         RegionFixture f(room);
         QVERIFY(f.regions->figures()->waitUntilCurrent());
@@ -200,9 +200,9 @@ private slots:
               static_cast<long long>(ms));
         QVERIFY2(ms < 250, qPrintable(QStringLiteral("%1 ms").arg(ms)));
         QVERIFY(f.regions->figures()->waitUntilCurrent());
-        const solver::BspFiguresResult expected = solver::computeBspFigures(f.document.scene());
-        QVERIFY(expected.figures);
-        QVERIFY2(f.dock()->summary()->text().contains(QString::number(expected.figures->fragments)),
+        const model::Result<solver::SceneBspFigures> expected = solver::computeBspFigures(f.document.scene());
+        QVERIFY(expected.ok());
+        QVERIFY2(f.dock()->summary()->text().contains(QString::number(expected->fragments)),
                  qPrintable(f.dock()->summary()->text()));
     }
 
@@ -242,10 +242,10 @@ private slots:
         const model::Scene scene = test::loadSample("two-lights-room.json");
         QVERIFY(scene.regions.size() >= 2);
         RegionFixture f(scene);
-        const solver::PrepareResult prepared = solver::prepareScene(scene);
-        QVERIFY(prepared.scene);
+        const model::Result<solver::PreparedScene> prepared = solver::prepareScene(scene);
+        QVERIFY(prepared.ok());
         QStringList expected;
-        collect(*prepared.scene, scene, prepared.scene->regionalRoot, expected);
+        collect(*prepared, scene, prepared->regionalRoot, expected);
         QStringList shown;
         QCOMPARE(f.dock()->treeView()->topLevelItemCount(), 1);
         collect(f.dock()->treeView()->topLevelItem(0), shown);

@@ -46,11 +46,11 @@ TEST(EditSettings, EachSolverSettingOutOfRangeIsRefusedWithAPointerToIt)
     for (const auto& [pointer, breakIt] : cases) {
         SolverSettings settings;
         breakIt(settings);
-        EXPECT_TRUE(checkSolverSettings(settings).has_value()) << pointer;
+        EXPECT_TRUE(!checkSolverSettings(settings).ok()) << pointer;
         auto error = expectRefused(scene, [&](Scene& s) { return setSolverSettings(s, settings); });
         EXPECT_EQ(error.pointer, pointer);
     }
-    EXPECT_FALSE(checkSolverSettings(SolverSettings{}).has_value()) << "the defaults are valid";
+    EXPECT_FALSE(!checkSolverSettings(SolverSettings{}).ok()) << "the defaults are valid";
 }
 
 TEST(EditSettings, SettingAndClearingTheCameraReturnThePreviousCamera)

@@ -286,9 +286,9 @@ TEST(RegionClip, RefusesPartsThatDoNotStraddleAndLeavesTheSceneUnchanged)
 TEST(RegionClip, FixesACrateStraddlingTwoRegionsOfTheSampleRoom)
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "two-lights-room.json";
-    SceneReadResult read = loadSceneFile(path.string());
-    ASSERT_TRUE(read.scene);
-    Scene scene = *read.scene;
+    Result<Scene> read = loadSceneFile(path.string());
+    ASSERT_TRUE(read.ok());
+    Scene scene = *read;
     const Diagnostics clean = validateScene(scene);
     scene.objects.push_back({"crate", "", {*makeBox("crate.body", {1.7, 0, 1}, {2.3, 0.5, 1.6}, "wood")}});
     ASSERT_EQ(straddleWarnings(scene).size(), 1u);

@@ -64,9 +64,9 @@ private:
 
 Scene sampleScene()
 {
-    const SceneReadResult read = loadSceneFile(std::string(REGIO_TEST_DATA) + "/valid/full.json");
-    EXPECT_TRUE(read.scene);
-    return read.scene ? *read.scene : Scene{};
+    const Result<Scene> read = loadSceneFile(std::string(REGIO_TEST_DATA) + "/valid/full.json");
+    EXPECT_TRUE(read.ok());
+    return read.ok() ? *read : Scene{};
 }
 
 Scene otherScene()
@@ -86,41 +86,41 @@ const std::string kOldText = "the user's previous scene file\n";
 TEST(SceneFileLoad, ReadsAFileAsParseSceneReadsItsText)
 {
     const std::string path = std::string(REGIO_TEST_DATA) + "/valid/full.json";
-    const SceneReadResult fromFile = loadSceneFile(path);
-    const SceneReadResult fromText = parseScene(readText(path));
-    ASSERT_TRUE(fromFile.scene && fromText.scene);
-    EXPECT_EQ(*fromFile.scene, *fromText.scene);
-    EXPECT_TRUE(fromFile.diagnostics.empty());
+    const Result<Scene> fromFile = loadSceneFile(path);
+    const Result<Scene> fromText = parseScene(readText(path));
+    ASSERT_TRUE(fromFile.ok() && fromText.ok());
+    EXPECT_EQ(*fromFile, *fromText);
+    EXPECT_TRUE(fromFile.diagnostics().empty());
 }
 
 TEST(SceneFileLoad, AMissingFileIsOneErrorWithTheSystemsReason)
 {
     ScratchDir dir;
-    const SceneReadResult read = loadSceneFile((dir / "absent.json").string());
-    EXPECT_FALSE(read.scene);
-    ASSERT_EQ(read.diagnostics.size(), 1u);
-    EXPECT_TRUE(read.diagnostics[0].isError());
-    EXPECT_EQ(read.diagnostics[0].message, "cannot open: No such file or directory");
-    EXPECT_EQ(read.diagnostics[0].pointer, "");
+    const Result<Scene> read = loadSceneFile((dir / "absent.json").string());
+    EXPECT_FALSE(read.ok());
+    ASSERT_EQ(read.diagnostics().size(), 1u);
+    EXPECT_TRUE(read.diagnostics()[0].isError());
+    EXPECT_EQ(read.diagnostics()[0].message, "cannot open: No such file or directory");
+    EXPECT_EQ(read.diagnostics()[0].pointer, "");
 }
 
 TEST(SceneFileLoad, ADirectoryIsRefused)
 {
     ScratchDir dir;
-    const SceneReadResult read = loadSceneFile(dir.path().string());
-    EXPECT_FALSE(read.scene);
-    ASSERT_EQ(read.diagnostics.size(), 1u);
-    EXPECT_EQ(read.diagnostics[0].message, "is a directory, not a scene file");
+    const Result<Scene> read = loadSceneFile(dir.path().string());
+    EXPECT_FALSE(read.ok());
+    ASSERT_EQ(read.diagnostics().size(), 1u);
+    EXPECT_EQ(read.diagnostics()[0].message, "is a directory, not a scene file");
 }
 
 TEST(SceneFileLoad, SyntaxErrorsKeepTheirPositionAndNoPathPrefix)
 {
-    const SceneReadResult read =
+    const Result<Scene> read =
         loadSceneFile(std::string(REGIO_TEST_DATA) + "/broken/malformed-json.json");
-    ASSERT_EQ(read.diagnostics.size(), 1u);
-    EXPECT_EQ(read.diagnostics[0].line, 6);
-    EXPECT_EQ(read.diagnostics[0].column, 21);
-    EXPECT_EQ(read.diagnostics[0].message.find("malformed-json"), std::string::npos);
+    ASSERT_EQ(read.diagnostics().size(), 1u);
+    EXPECT_EQ(read.diagnostics()[0].line, 6);
+    EXPECT_EQ(read.diagnostics()[0].column, 21);
+    EXPECT_EQ(read.diagnostics()[0].message.find("malformed-json"), std::string::npos);
 }
 
 // ------------------------------------------------------------------ saving
@@ -130,12 +130,12 @@ TEST(SceneFileSave, WritesTheCanonicalTextAndNothingElse)
     ScratchDir dir;
     const Scene scene = sampleScene();
     const std::string path = (dir / "scene.json").string();
-    EXPECT_FALSE(saveSceneFile(scene, path));
+    EXPECT_TRUE(saveSceneFile(scene, path));
     EXPECT_EQ(readText(path), serializeScene(scene));
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});
-    const SceneReadResult back = loadSceneFile(path);
-    ASSERT_TRUE(back.scene);
-    EXPECT_EQ(*back.scene, scene);
+    const Result<Scene> back = loadSceneFile(path);
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(*back, scene);
 }
 
 TEST(SceneFileSave, ReplacesAnExistingFileWhole)
@@ -143,7 +143,7 @@ TEST(SceneFileSave, ReplacesAnExistingFileWhole)
     ScratchDir dir;
     const std::string path = (dir / "scene.json").string();
     std::ofstream(path) << std::string(100000, 'x');
-    EXPECT_FALSE(saveSceneFile(otherScene(), path));
+    EXPECT_TRUE(saveSceneFile(otherScene(), path));
     EXPECT_EQ(readText(path), serializeScene(otherScene()));
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});
 }
@@ -153,10 +153,10 @@ TEST(SceneFileSave, SaveLoadSaveGivesTheSameBytes)
     ScratchDir dir;
     const std::string first = (dir / "first.json").string();
     const std::string second = (dir / "second.json").string();
-    ASSERT_FALSE(saveSceneFile(sampleScene(), first));
-    const SceneReadResult read = loadSceneFile(first);
-    ASSERT_TRUE(read.scene);
-    ASSERT_FALSE(saveSceneFile(*read.scene, second));
+    ASSERT_TRUE(saveSceneFile(sampleScene(), first));
+    const Result<Scene> read = loadSceneFile(first);
+    ASSERT_TRUE(read.ok());
+    ASSERT_TRUE(saveSceneFile(*read, second));
     EXPECT_EQ(readText(first), readText(second));
 }
 
@@ -166,7 +166,7 @@ TEST(SceneFileSave, KeepsThePermissionsOfTheFileItReplaces)
     const fs::path path = dir / "private.json";
     std::ofstream(path) << kOldText;
     ::chmod(path.c_str(), 0640);
-    ASSERT_FALSE(saveSceneFile(sampleScene(), path.string()));
+    ASSERT_TRUE(saveSceneFile(sampleScene(), path.string()));
     struct stat info {};
     ASSERT_EQ(::stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 07777, 0640u);
@@ -179,7 +179,7 @@ TEST(SceneFileSave, ANewFileGetsTheUsualPermissionsNotThoseOfATemporaryFile)
     const fs::path path = dir / "new.json";
     const auto error = saveSceneFile(sampleScene(), path.string());
     ::umask(previous);
-    ASSERT_FALSE(error) << error->message;
+    ASSERT_TRUE(error.ok()) << error.error().message;
     struct stat info {};
     ASSERT_EQ(::stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 07777, 0644u);
@@ -191,7 +191,7 @@ TEST(SceneFileSave, SavingThroughASymbolicLinkReplacesTheFileItPointsTo)
     fs::create_directories(dir / "real");
     std::ofstream(dir / "real" / "scene.json") << kOldText;
     fs::create_symlink(dir / "real" / "scene.json", dir / "link.json");
-    ASSERT_FALSE(saveSceneFile(sampleScene(), (dir / "link.json").string()));
+    ASSERT_TRUE(saveSceneFile(sampleScene(), (dir / "link.json").string()));
     EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
     EXPECT_EQ(readText(dir / "real" / "scene.json"), serializeScene(sampleScene()));
 }
@@ -203,10 +203,10 @@ TEST(SceneFileSave, ADirectoryAsTargetIsRefusedAndLeftAlone)
     std::ofstream(dir / "scene.json" / "inside.txt") << kOldText;
     const std::string path = (dir / "scene.json").string();
     const auto error = saveSceneFile(sampleScene(), path);
-    ASSERT_TRUE(error);
-    EXPECT_TRUE(error->isError());
-    EXPECT_NE(error->message.find("cannot save " + path), std::string::npos) << error->message;
-    EXPECT_NE(error->message.find("Is a directory"), std::string::npos) << error->message;
+    ASSERT_FALSE(error.ok());
+    EXPECT_TRUE(error.error().isError());
+    EXPECT_NE(error.error().message.find("cannot save " + path), std::string::npos) << error.error().message;
+    EXPECT_NE(error.error().message.find("Is a directory"), std::string::npos) << error.error().message;
     EXPECT_EQ(readText(dir / "scene.json" / "inside.txt"), kOldText);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});
 }
@@ -216,9 +216,9 @@ TEST(SceneFileSave, AMissingDirectoryIsReportedWithItsPath)
     ScratchDir dir;
     const std::string path = (dir / "no" / "such" / "scene.json").string();
     const auto error = saveSceneFile(sampleScene(), path);
-    ASSERT_TRUE(error);
-    EXPECT_NE(error->message.find("cannot save " + path), std::string::npos) << error->message;
-    EXPECT_NE(error->message.find("No such file or directory"), std::string::npos) << error->message;
+    ASSERT_FALSE(error.ok());
+    EXPECT_NE(error.error().message.find("cannot save " + path), std::string::npos) << error.error().message;
+    EXPECT_NE(error.error().message.find("No such file or directory"), std::string::npos) << error.error().message;
 }
 
 // Permission bits do not stop root, so the save runs in a child process that
@@ -240,10 +240,10 @@ TEST(SceneFileSave, AnUnwritableDirectoryLeavesTheOldFileIntact)
         if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0))
             ::_exit(3);
         const auto error = saveSceneFile(scene, path.string());
-        const std::string message = error ? error->message : "";
+        const std::string message = !error.ok() ? error.error().message : "";
         if (::write(pipeFds[1], message.data(), message.size()) < 0)
             ::_exit(4);
-        ::_exit(error ? 0 : 1);
+        ::_exit(!error.ok() ? 0 : 1);
     }
     ::close(pipeFds[1]);
     std::string message;
@@ -282,11 +282,11 @@ TEST(SceneFileSave, AWriteThatFailsHalfwayLeavesTheOldFileAndNoTemporaryFile)
     const auto error = saveSceneFile(sampleScene(), path.string());
     ::setrlimit(RLIMIT_FSIZE, &previous);
     std::signal(SIGXFSZ, previousHandler);
-    ASSERT_TRUE(error);
-    EXPECT_NE(error->message.find("cannot save " + path.string() + ": cannot write "),
+    ASSERT_FALSE(error.ok());
+    EXPECT_NE(error.error().message.find("cannot save " + path.string() + ": cannot write "),
               std::string::npos)
-        << error->message;
-    EXPECT_NE(error->message.find("File too large"), std::string::npos) << error->message;
+        << error.error().message;
+    EXPECT_NE(error.error().message.find("File too large"), std::string::npos) << error.error().message;
     EXPECT_EQ(readText(path), kOldText);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});
 }
@@ -300,16 +300,16 @@ TEST(SceneFileSave, ASceneThatWouldNotLoadBackIsNotWritten)
     // JSON has no NaN: it would be written as null and the file would not load.
     scene.objects[1].parts[0].vertices[2].y = std::numeric_limits<double>::quiet_NaN();
     const auto nan = saveSceneFile(scene, path.string());
-    ASSERT_TRUE(nan);
-    EXPECT_EQ(nan->pointer, "/objects/1/parts/0/vertices/2/1");
-    EXPECT_NE(nan->message.find("the scene would not load back"), std::string::npos) << nan->message;
-    EXPECT_EQ(nan->idPath, (std::vector<std::string>{"box", "box.cube"}));
+    ASSERT_FALSE(nan.ok());
+    EXPECT_EQ(nan.error().pointer, "/objects/1/parts/0/vertices/2/1");
+    EXPECT_NE(nan.error().message.find("the scene would not load back"), std::string::npos) << nan.error().message;
+    EXPECT_EQ(nan.error().idPath, (std::vector<std::string>{"box", "box.cube"}));
 
     scene = sampleScene();
     scene.materials[0].reflectance.r = 1.0;
     const auto reflectance = saveSceneFile(scene, path.string());
-    ASSERT_TRUE(reflectance);
-    EXPECT_EQ(reflectance->pointer, "/materials/0/reflectance/0");
+    ASSERT_FALSE(reflectance.ok());
+    EXPECT_EQ(reflectance.error().pointer, "/materials/0/reflectance/0");
 
     EXPECT_EQ(readText(path), kOldText);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});

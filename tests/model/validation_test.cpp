@@ -595,10 +595,10 @@ TEST(InvalidSceneFiles, EveryFileHasARowAndTheRulesAreCovered)
 TEST_P(InvalidSceneFile, ReadsCleanlyAndBreaksExactlyItsRule)
 {
     const InvalidFile& file = GetParam();
-    SceneReadResult read = loadSceneFile(invalidDataDir() + "/" + file.name);
-    ASSERT_TRUE(read.scene.has_value()) << dump(read.diagnostics);
-    EXPECT_TRUE(read.diagnostics.empty()) << dump(read.diagnostics);
-    expectOnly(validateScene(*read.scene), file.severity, file.pointer, file.idPath, file.message);
+    Result<Scene> read = loadSceneFile(invalidDataDir() + "/" + file.name);
+    ASSERT_TRUE(read.ok()) << dump(read.diagnostics());
+    EXPECT_TRUE(read.diagnostics().empty()) << dump(read.diagnostics());
+    expectOnly(validateScene(*read), file.severity, file.pointer, file.idPath, file.message);
 }
 
 INSTANTIATE_TEST_SUITE_P(Rules, InvalidSceneFile, testing::ValuesIn(loadInvalidFileTable()),

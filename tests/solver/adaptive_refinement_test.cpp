@@ -27,9 +27,9 @@ struct Shot {
         s.solver.adaptive.threshold = threshold;
         s.solver.adaptive.minEdge = minEdge;
         settings = s.solver.adaptive;
-        PrepareResult prepared = prepareScene(s);
-        scene = std::move(*prepared.scene);
-        shooting = std::make_unique<Shooting>(scene, 64, VisibilityMode::Painter);
+        model::Result<solver::PreparedScene> prepared = prepareScene(s);
+        scene = std::move(*prepared);
+        shooting = std::make_unique<Shooting>(scene, 64, model::Visibility::Painter);
         shooting->shoot();
     }
     int elements() const { return int(scene.elements.size()); }

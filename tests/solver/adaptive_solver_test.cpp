@@ -38,10 +38,10 @@ int faceIndex(const SolutionMesh& mesh, const std::string& id)
 TEST(AdaptiveSolver, TheEnergyBalanceHoldsExactlyAfterASolveThatSubdivides)
 {
     auto built = Solver::create(test::boxUnderLamp());
-    ASSERT_TRUE(built.solver);
-    const int initial = built.solver->stats().elements;
-    EXPECT_EQ(built.solver->step(40), 40) << "rounds between shots do not count as shots";
-    const SolverStats s = built.solver->stats();
+    ASSERT_TRUE(built.ok());
+    const int initial = (*built)->stats().elements;
+    EXPECT_EQ((*built)->step(40), 40) << "rounds between shots do not count as shots";
+    const SolverStats s = (*built)->stats();
     EXPECT_EQ(s.iterations, 40);
     EXPECT_GT(s.adaptiveRounds, 0);
     EXPECT_GT(s.elements, initial);
@@ -55,10 +55,10 @@ TEST(AdaptiveSolver, ElementsMultiplyWhereTheShadowFallsAndTheMeshRevisionChange
     model::Scene scene = test::boxUnderLamp();
     scene.solver.adaptive.threshold = 0.5; // only the shadow's edge, not the lamp's falloff
     auto built = Solver::create(scene);
-    ASSERT_TRUE(built.solver);
-    const SolutionSnapshot before = built.solver->snapshot();
-    ASSERT_EQ(built.solver->step(2), 2); // the lamp's shot, a refinement round, one more shot
-    const SolutionSnapshot after = built.solver->snapshot();
+    ASSERT_TRUE(built.ok());
+    const SolutionSnapshot before = (*built)->snapshot();
+    ASSERT_EQ((*built)->step(2), 2); // the lamp's shot, a refinement round, one more shot
+    const SolutionSnapshot after = (*built)->snapshot();
     EXPECT_GT(after.mesh->revision, before.mesh->revision);
     EXPECT_GT(after.mesh->triangles.size(), before.mesh->triangles.size());
     EXPECT_EQ(after.stats.elements, int(after.mesh->triangles.size()));
@@ -95,8 +95,8 @@ TEST(AdaptiveSolver, SnapshotsFromAnotherThreadStayConsistentWhileRunSubdivides)
     scene.solver.maxIterations = 60;
     scene.solver.convergence = 1e-6;
     auto built = Solver::create(scene);
-    ASSERT_TRUE(built.solver);
-    Solver& solver = *built.solver;
+    ASSERT_TRUE(built.ok());
+    Solver& solver = **built;
     std::atomic<bool> done{false};
     std::atomic<int> inconsistent{0};
     std::atomic<int> taken{0};
@@ -133,19 +133,19 @@ TEST(AdaptiveSolver, PerFaceMeansAgreeWithAUniformlyFineMeshWithinTwoPercent)
     const std::atomic<bool> cancel{false};
 
     auto adaptive = Solver::create(scene);
-    ASSERT_TRUE(adaptive.solver);
-    ASSERT_EQ(adaptive.solver->run({}, cancel), StopReason::Converged);
-    EXPECT_GT(adaptive.solver->stats().adaptiveRounds, 0);
+    ASSERT_TRUE(adaptive.ok());
+    ASSERT_EQ((*adaptive)->run({}, cancel), StopReason::Converged);
+    EXPECT_GT((*adaptive)->stats().adaptiveRounds, 0);
 
     SolverOptions fine;
     fine.adaptive = false;
     fine.elementsPerPatch = 64;
     auto uniform = Solver::create(scene, fine);
-    ASSERT_TRUE(uniform.solver);
-    ASSERT_EQ(uniform.solver->run({}, cancel), StopReason::Converged);
+    ASSERT_TRUE(uniform.ok());
+    ASSERT_EQ((*uniform)->run({}, cancel), StopReason::Converged);
 
-    const std::vector<FaceResult> a = adaptive.solver->faceResults();
-    const std::vector<FaceResult> u = uniform.solver->faceResults();
+    const std::vector<FaceResult> a = (*adaptive)->faceResults();
+    const std::vector<FaceResult> u = (*uniform)->faceResults();
     ASSERT_EQ(a.size(), u.size());
     double brightest = 0.0;
     for (const FaceResult& f : u)
@@ -166,14 +166,14 @@ TEST(AdaptiveSolver, PerFaceMeansAgreeWithAUniformlyFineMeshWithinTwoPercent)
 TEST(AdaptiveSolver, TheReportGivesTheFinalElementCountAndTheRounds)
 {
     auto built = Solver::create(test::boxUnderLamp());
-    ASSERT_TRUE(built.solver);
-    const int initial = built.solver->stats().elements;
-    built.solver->step(20);
-    const nlohmann::json report = solveReport("box under lamp", *built.solver);
-    EXPECT_EQ(report["elements"].get<int>(), built.solver->stats().elements);
+    ASSERT_TRUE(built.ok());
+    const int initial = (*built)->stats().elements;
+    (*built)->step(20);
+    const nlohmann::json report = output::solveReport("box under lamp", **built);
+    EXPECT_EQ(report["elements"].get<int>(), (*built)->stats().elements);
     EXPECT_GT(report["elements"].get<int>(), initial);
     EXPECT_TRUE(report["adaptive"]["enabled"].get<bool>());
-    EXPECT_EQ(report["adaptive"]["rounds"].get<int>(), built.solver->stats().adaptiveRounds);
+    EXPECT_EQ(report["adaptive"]["rounds"].get<int>(), (*built)->stats().adaptiveRounds);
     EXPECT_GT(report["adaptive"]["rounds"].get<int>(), 0);
 }
 
@@ -185,25 +185,25 @@ TEST(AdaptiveSolver, OptionsOverrideTheScenesAdaptiveSettings)
     options.adaptiveMinEdge = 0.1;
     options.adaptiveAnchoring = false;
     auto built = Solver::create(test::boxUnderLamp(), options);
-    ASSERT_TRUE(built.solver);
-    const model::AdaptiveSettings& a = built.solver->settings().adaptive;
+    ASSERT_TRUE(built.ok());
+    const model::AdaptiveSettings& a = (*built)->settings().adaptive;
     EXPECT_FALSE(a.enabled);
     EXPECT_EQ(a.threshold, 0.2);
     EXPECT_EQ(a.minEdge, 0.1);
     EXPECT_FALSE(a.anchoring);
-    const int initial = built.solver->stats().elements;
-    built.solver->step(5);
-    EXPECT_EQ(built.solver->stats().elements, initial);
-    EXPECT_EQ(built.solver->snapshot().mesh->revision, 0);
+    const int initial = (*built)->stats().elements;
+    (*built)->step(5);
+    EXPECT_EQ((*built)->stats().elements, initial);
+    EXPECT_EQ((*built)->snapshot().mesh->revision, 0);
 }
 
 TEST(AdaptiveSolver, AClosedRoomStaysBalancedAndAlmostLeakFreeWhileItsMeshGrows)
 {
     auto built = Solver::create(test::closedRoom());
-    ASSERT_TRUE(built.solver);
-    const int initial = built.solver->stats().elements;
-    built.solver->step(200);
-    const SolverStats s = built.solver->stats();
+    ASSERT_TRUE(built.ok());
+    const int initial = (*built)->stats().elements;
+    (*built)->step(200);
+    const SolverStats s = (*built)->stats();
     EXPECT_GT(s.elements, initial);
     EXPECT_GT(s.adaptiveRounds, 1);
     for (int c = 0; c < 3; ++c) {
@@ -224,19 +224,19 @@ TEST(AdaptiveSolver, StepAndRunRefineAlikeSoTheSameShotCountGivesTheSameMesh)
 {
     model::Scene scene = test::boxUnderLamp();
     auto stepped = Solver::create(scene);
-    ASSERT_TRUE(stepped.solver);
-    stepped.solver->step(40);
+    ASSERT_TRUE(stepped.ok());
+    (*stepped)->step(40);
 
     SolverOptions options;
     options.maxIterations = 40;
     options.convergence = 0.0;
     auto ran = Solver::create(scene, options);
-    ASSERT_TRUE(ran.solver);
+    ASSERT_TRUE(ran.ok());
     const std::atomic<bool> cancel{false};
-    ASSERT_EQ(ran.solver->run({}, cancel), StopReason::MaxIterations);
+    ASSERT_EQ((*ran)->run({}, cancel), StopReason::MaxIterations);
 
-    const SolutionSnapshot a = stepped.solver->snapshot();
-    const SolutionSnapshot b = ran.solver->snapshot();
+    const SolutionSnapshot a = (*stepped)->snapshot();
+    const SolutionSnapshot b = (*ran)->snapshot();
     EXPECT_EQ(a.stats.adaptiveRounds, b.stats.adaptiveRounds);
     EXPECT_EQ(a.mesh->revision, b.mesh->revision);
     ASSERT_EQ(a.mesh->triangles, b.mesh->triangles);
@@ -246,12 +246,12 @@ TEST(AdaptiveSolver, StepAndRunRefineAlikeSoTheSameShotCountGivesTheSameMesh)
 TEST(AdaptiveSolver, TheLastShotIsNeverFollowedByARoundSoNoElementEndsWithOnlyInterpolatedValues)
 {
     auto built = Solver::create(test::boxUnderLamp());
-    ASSERT_TRUE(built.solver);
-    built.solver->step(1); // the lamp: a round is now due, but only before the next shot
-    EXPECT_EQ(built.solver->stats().adaptiveRounds, 0);
-    EXPECT_EQ(built.solver->snapshot().mesh->revision, 0);
-    built.solver->step(1);
-    EXPECT_EQ(built.solver->stats().adaptiveRounds, 1);
+    ASSERT_TRUE(built.ok());
+    (*built)->step(1); // the lamp: a round is now due, but only before the next shot
+    EXPECT_EQ((*built)->stats().adaptiveRounds, 0);
+    EXPECT_EQ((*built)->snapshot().mesh->revision, 0);
+    (*built)->step(1);
+    EXPECT_EQ((*built)->stats().adaptiveRounds, 1);
 }
 
 TEST(AdaptiveSolver, TheAnchoredTriangulationHasNoTVertices)
@@ -260,9 +260,9 @@ TEST(AdaptiveSolver, TheAnchoredTriangulationHasNoTVertices)
         model::Scene scene = test::boxUnderLamp();
         scene.solver.adaptive.anchoring = anchoring;
         auto built = Solver::create(scene);
-        ASSERT_TRUE(built.solver);
-        built.solver->step(20);
-        const SolutionSnapshot snap = built.solver->snapshot();
+        ASSERT_TRUE(built.ok());
+        (*built)->step(20);
+        const SolutionSnapshot snap = (*built)->snapshot();
         const SolutionMesh& m = *snap.mesh;
         ASSERT_GT(snap.stats.adaptiveRounds, 0);
         if (!anchoring) {
@@ -315,14 +315,14 @@ TEST(AdaptiveSolver, ASolveCancelledAgainAndAgainEndsWhereAnUninterruptedOneDoes
     options.convergence = 0.0;
 
     auto straight = Solver::create(scene, options);
-    ASSERT_TRUE(straight.solver);
+    ASSERT_TRUE(straight.ok());
     const std::atomic<bool> never{false};
-    ASSERT_EQ(straight.solver->run({}, never), StopReason::MaxIterations);
+    ASSERT_EQ((*straight)->run({}, never), StopReason::MaxIterations);
 
     // Stops land anywhere: in a shot, in a round's selection or splits, or
     // between its splits and the hand-over of the grown mesh.
     auto interrupted = Solver::create(scene, options);
-    ASSERT_TRUE(interrupted.solver);
+    ASSERT_TRUE(interrupted.ok());
     std::atomic<bool> cancel{false};
     std::atomic<bool> done{false};
     std::thread toggler([&] {
@@ -336,7 +336,7 @@ TEST(AdaptiveSolver, ASolveCancelledAgainAndAgainEndsWhereAnUninterruptedOneDoes
     int cancelled = 0;
     StopReason stop = StopReason::Cancelled;
     for (int call = 0; call < 200000 && stop == StopReason::Cancelled; ++call) {
-        stop = interrupted.solver->run({}, cancel);
+        stop = (*interrupted)->run({}, cancel);
         cancelled += stop == StopReason::Cancelled ? 1 : 0;
     }
     done = true;
@@ -344,8 +344,8 @@ TEST(AdaptiveSolver, ASolveCancelledAgainAndAgainEndsWhereAnUninterruptedOneDoes
     ASSERT_EQ(stop, StopReason::MaxIterations);
     EXPECT_GT(cancelled, 0);
 
-    const SolutionSnapshot a = straight.solver->snapshot();
-    const SolutionSnapshot b = interrupted.solver->snapshot();
+    const SolutionSnapshot a = (*straight)->snapshot();
+    const SolutionSnapshot b = (*interrupted)->snapshot();
     EXPECT_EQ(a.stats.iterations, b.stats.iterations);
     EXPECT_EQ(a.stats.adaptiveRounds, b.stats.adaptiveRounds);
     ASSERT_EQ(a.mesh->triangles, b.mesh->triangles);

@@ -38,9 +38,9 @@ PreparedScene floorScene()
     test::addPolygon(scene, "floor", {{0, 0, 0}, {6, 0, 0}, {6, 3, 0}, {0, 3, 0}}, "grey");
     scene.solver.patchSize = 1.0;
     scene.solver.elementsPerPatch = 4;
-    PrepareResult r = prepareScene(scene);
-    EXPECT_TRUE(r.scene);
-    return r.scene ? std::move(*r.scene) : PreparedScene{};
+    model::Result<PreparedScene> r = prepareScene(scene);
+    EXPECT_TRUE(r.ok());
+    return r.ok() ? std::move(*r) : PreparedScene{};
 }
 
 // Lit on one side of x = kStepX, in shadow on the other.
@@ -417,11 +417,11 @@ std::vector<GrownScene> grownSamples(bool anchoring, std::vector<AdaptiveMesh>* 
     out.reserve(inputs.size());
     for (auto& [name, scene] : inputs) {
         EXPECT_FALSE(scene.objects.empty()) << name;
-        PrepareResult r = prepareScene(scene);
-        EXPECT_TRUE(r.scene) << name;
-        if (!r.scene)
+        model::Result<PreparedScene> r = prepareScene(scene);
+        EXPECT_TRUE(r.ok()) << name;
+        if (!r.ok())
             continue;
-        out.push_back({name, std::move(*r.scene)});
+        out.push_back({name, std::move(*r)});
     }
     for (GrownScene& g : out) {
         PreparedScene& s = g.scene;
@@ -531,11 +531,11 @@ TEST(AdaptiveSubdivision, ShootingOnTheGrownMeshKeepsTheEnergyBalanceExact)
 {
     model::Scene room = test::loadSample("cornell-box.json");
     ASSERT_FALSE(room.objects.empty());
-    PrepareResult r = prepareScene(room);
-    ASSERT_TRUE(r.scene);
-    PreparedScene shot = *r.scene;              // what the shooter sees (active leaves)
-    PreparedScene hierarchy = std::move(*r.scene); // grown by the AdaptiveMesh
-    Shooting shooting(shot, 48, VisibilityMode::Painter);
+    model::Result<PreparedScene> r = prepareScene(room);
+    ASSERT_TRUE(r.ok());
+    PreparedScene shot = *r;              // what the shooter sees (active leaves)
+    PreparedScene hierarchy = std::move(*r); // grown by the AdaptiveMesh
+    Shooting shooting(shot, 48, model::Visibility::Painter);
     for (int i = 0; i < 6; ++i)
         ASSERT_EQ(shooting.shoot(), ShotResult::Shot);
 

@@ -15,6 +15,7 @@
 #include <filesystem>
 
 using namespace regio;
+using namespace regio::output;
 using namespace regio::solver;
 
 namespace {
@@ -22,16 +23,16 @@ namespace {
 model::Scene sampleScene(const char* name)
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / name;
-    model::SceneReadResult read = model::loadSceneFile(path.string());
-    EXPECT_TRUE(read.scene) << path;
-    return read.scene ? *read.scene : model::Scene{};
+    model::Result<model::Scene> read = model::loadSceneFile(path.string());
+    EXPECT_TRUE(read.ok()) << path;
+    return read.ok() ? *read : model::Scene{};
 }
 
 SceneBspFigures figuresOk(const model::Scene& scene, RegionsMode mode)
 {
-    BspFiguresResult result = computeBspFigures(scene, {mode});
-    EXPECT_TRUE(result.figures.has_value());
-    return result.figures ? *result.figures : SceneBspFigures{};
+    model::Result<SceneBspFigures> result = computeBspFigures(scene, {mode});
+    EXPECT_TRUE(result.ok());
+    return result.ok() ? *result : SceneBspFigures{};
 }
 
 // The figures a full preparation with the scene's own settings gives.
@@ -39,9 +40,9 @@ SceneBspFigures fullPreparationFigures(const model::Scene& scene, RegionsMode mo
 {
     PrepareOptions options;
     options.regions = mode;
-    PrepareResult prepared = prepareScene(scene, options);
-    EXPECT_TRUE(prepared.scene.has_value());
-    return prepared.scene ? bspFiguresOf(*prepared.scene, mode) : SceneBspFigures{};
+    model::Result<PreparedScene> prepared = prepareScene(scene, options);
+    EXPECT_TRUE(prepared.ok());
+    return prepared.ok() ? bspFiguresOf(*prepared, mode) : SceneBspFigures{};
 }
 
 void expectSameFigures(const SceneBspFigures& a, const SceneBspFigures& b)
@@ -86,9 +87,9 @@ TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)
             SCOPED_TRACE(regionsModeName(mode));
             SolverOptions options;
             options.regions = mode;
-            Solver::CreateResult built = Solver::create(scene, options);
-            ASSERT_TRUE(built.solver);
-            const nlohmann::json bsp = solveReport("scene", *built.solver)["bsp"];
+            model::Result<std::unique_ptr<Solver>> built = Solver::create(scene, options);
+            ASSERT_TRUE(built.ok());
+            const nlohmann::json bsp = solveReport("scene", **built)["bsp"];
             const SceneBspFigures figures = figuresOk(scene, mode);
             EXPECT_EQ(bsp["regions"].get<size_t>(), figures.regions.size());
             EXPECT_EQ(bsp["inputFaces"].get<int>(), figures.inputFaces);
@@ -111,9 +112,9 @@ TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)
 
 TEST(BspFigures, ReadThePreparedScenesStatsAndRegionStats)
 {
-    PrepareResult prepared = prepareScene(sampleScene("two-lights-room.json"));
-    ASSERT_TRUE(prepared.scene);
-    const PreparedScene& s = *prepared.scene;
+    model::Result<PreparedScene> prepared = prepareScene(sampleScene("two-lights-room.json"));
+    ASSERT_TRUE(prepared.ok());
+    const PreparedScene& s = *prepared;
     const SceneBspFigures figures = bspFiguresOf(s, RegionsMode::Authored);
     EXPECT_EQ(figures.inputFaces, s.stats.inputFaces);
     EXPECT_EQ(figures.regionPieces, s.stats.regionPieces);
@@ -182,9 +183,9 @@ TEST(BspFigures, ComeBackEmptyWithTheDiagnosticsOfASceneThatCannotBePrepared)
 {
     model::Scene scene = sampleScene("two-lights-room.json");
     scene.regions[1].min.x = 1.0; // overlaps "west"
-    BspFiguresResult result = computeBspFigures(scene);
-    EXPECT_FALSE(result.figures);
-    EXPECT_TRUE(model::hasErrors(result.diagnostics));
+    model::Result<SceneBspFigures> result = computeBspFigures(scene);
+    EXPECT_FALSE(result.ok());
+    EXPECT_TRUE(model::hasErrors(result.diagnostics()));
     const BspComparison comparison = compareWithSingleBsp(scene);
     EXPECT_FALSE(comparison.authored);
     EXPECT_TRUE(comparison.baseline) << "the baseline ignores the regions";

@@ -27,21 +27,23 @@ namespace {
 model::Scene twoLightsRoom()
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "two-lights-room.json";
-    model::SceneReadResult read = model::loadSceneFile(path.string());
-    EXPECT_TRUE(read.scene) << path;
-    return read.scene ? *read.scene : model::Scene{};
+    model::Result<model::Scene> read = model::loadSceneFile(path.string());
+    EXPECT_TRUE(read.ok()) << path;
+    return read.ok() ? *read : model::Scene{};
 }
 
 // A scene with one region holding all of `scene`: its single BSP tree, with
 // an order the author can edit (scene order to start with).
 model::Scene oneRegion(model::Scene scene, std::vector<std::string> order = {})
 {
-    PrepareResult prepared = prepareScene(scene, bspStageOptions({RegionsMode::None}));
-    EXPECT_TRUE(prepared.scene);
+    PrepareOptions options;
+    options.regions = RegionsMode::None;
+    model::Result<PreparedScene> prepared = prepareBsp(scene, options);
+    EXPECT_TRUE(prepared.ok());
     model::Region region;
     region.id = "all";
-    region.min = prepared.scene->bounds.min - model::Vec3(0.01);
-    region.max = prepared.scene->bounds.max + model::Vec3(0.01);
+    region.min = prepared->bounds.min - model::Vec3(0.01);
+    region.max = prepared->bounds.max + model::Vec3(0.01);
     region.bspOrder = std::move(order);
     scene.regions = {region};
     return scene;
@@ -49,13 +51,13 @@ model::Scene oneRegion(model::Scene scene, std::vector<std::string> order = {})
 
 BspFigures regionFigures(const model::Scene& scene, const std::string& regionId)
 {
-    BspFiguresResult result = computeBspFigures(scene);
-    EXPECT_TRUE(result.figures);
-    if (!result.figures)
+    model::Result<SceneBspFigures> result = computeBspFigures(scene);
+    EXPECT_TRUE(result.ok());
+    if (!result.ok())
         return {};
-    const int r = result.figures->regionIndex(regionId);
+    const int r = result->regionIndex(regionId);
     EXPECT_GE(r, 0) << regionId;
-    return r >= 0 ? result.figures->regions[size_t(r)].figures : BspFigures{};
+    return r >= 0 ? result->regions[size_t(r)].figures : BspFigures{};
 }
 
 model::Scene applied(model::Scene scene, const BspOrderSuggestion& suggestion)
@@ -83,13 +85,17 @@ model::Scene boxUnderPlate()
 
 } // namespace
 
-TEST(BspSuggest, RegionCellPolygonsRebuildTheSolversTreesExactly)
+// The cells the suggestion starts from (prepareBspInput) rebuild the trees of
+// the whole preparation (prepareScene) exactly.
+TEST(BspSuggest, TheCellsOfTheBspStageRebuildTheSolversTreesExactly)
 {
     for (const model::Scene& scene : {twoLightsRoom(), oneRegion(test_scenes::furnishedRoom(3, 40))}) {
-        PrepareResult prepared = prepareScene(scene, bspStageOptions({RegionsMode::Authored}));
-        ASSERT_TRUE(prepared.scene);
-        const PreparedScene& s = *prepared.scene;
-        std::vector<std::vector<FacePolygon>> cells = regionCellPolygons(scene, s);
+        model::Result<PreparedScene> prepared = prepareScene(scene);
+        ASSERT_TRUE(prepared.ok());
+        const PreparedScene& s = *prepared;
+        model::Result<BspInput> input = prepareBspInput(scene);
+        ASSERT_TRUE(input.ok());
+        std::vector<std::vector<FacePolygon>>& cells = input->cells;
         ASSERT_EQ(cells.size(), s.regions.size());
 
         std::unordered_map<std::string, int> faceIndex;

@@ -17,7 +17,7 @@ using model::Vec3;
 
 namespace {
 
-std::map<std::string, FaceResult> solve(const model::Scene& scene, VisibilityMode mode, double convergence = 2e-3)
+std::map<std::string, FaceResult> solve(const model::Scene& scene, model::Visibility mode, double convergence = 2e-3)
 {
     SolverOptions options;
     options.hemicube = 100;
@@ -26,13 +26,13 @@ std::map<std::string, FaceResult> solve(const model::Scene& scene, VisibilityMod
     options.convergence = convergence;
     options.adaptive = false; // what is painted where, on the mesh as meshed
     auto built = Solver::create(scene, options);
-    EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
+    EXPECT_TRUE(built.ok()) << (built.diagnostics().empty() ? "" : built.diagnostics()[0].message);
     std::map<std::string, FaceResult> out;
-    if (!built.solver)
+    if (!built.ok())
         return out;
     std::atomic<bool> cancel{false};
-    EXPECT_EQ(built.solver->run({}, cancel), StopReason::Converged);
-    for (FaceResult& f : built.solver->faceResults())
+    EXPECT_EQ((*built)->run({}, cancel), StopReason::Converged);
+    for (FaceResult& f : (*built)->faceResults())
         out[f.id] = f;
     return out;
 }
@@ -69,15 +69,15 @@ model::Scene thinWallRoom(bool onePart)
 
 void expectBothSidesLit(const model::Scene& scene, const std::string& a, const std::string& b)
 {
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         const auto faces = solve(scene, mode);
         const FaceResult& fa = faces.at(a);
         const FaceResult& fb = faces.at(b);
         for (int c = 0; c < 3; ++c) {
             // Lit from the lamp above (about 0.36 W/m^2; 0 if a side were blocked).
-            EXPECT_GT(fa.radiosity[c], 0.1) << a << " " << visibilityModeName(mode);
+            EXPECT_GT(fa.radiosity[c], 0.1) << a << " " << model::visibilityName(mode);
             // The scene is symmetric about the wall: both sides alike.
-            EXPECT_NEAR(fa.radiosity[c], fb.radiosity[c], 0.03 * fb.radiosity[c]) << visibilityModeName(mode);
+            EXPECT_NEAR(fa.radiosity[c], fb.radiosity[c], 0.03 * fb.radiosity[c]) << model::visibilityName(mode);
         }
     }
 }
@@ -100,7 +100,7 @@ TEST(CoplanarOrder, ABoxStandingOnABoxLeavesNoLightOnTheFacesThatTouch)
     // faces into the big box everywhere, and shooters inside the big box's
     // footprint (floor patches whose centre lies under it) must not light it.
     const model::Scene scene = test::loadSample("two-lights-room.json");
-    const auto faces = solve(scene, VisibilityMode::Painter, 5e-3);
+    const auto faces = solve(scene, model::Visibility::Painter, 5e-3);
     const FaceResult& bottom = faces.at("boxes.small.ny");
     EXPECT_GT(bottom.area, 0.0);
     for (int c = 0; c < 3; ++c)
@@ -128,11 +128,11 @@ TEST(CoplanarOrder, AFaceOnTheSideOfASolidIsDarkWhereItTouchesAndLitElsewhere)
     options.convergence = 2e-3;
     options.adaptive = false; // the 0.25 m mesh stays aligned to the contact square
     auto built = Solver::create(scene, options);
-    ASSERT_TRUE(built.solver);
+    ASSERT_TRUE(built.ok());
     std::atomic<bool> cancel{false};
-    ASSERT_EQ(built.solver->run({}, cancel), StopReason::Converged);
-    const SolutionSnapshot snap = built.solver->snapshot();
-    const PreparedScene& p = built.solver->prepared();
+    ASSERT_EQ((*built)->run({}, cancel), StopReason::Converged);
+    const SolutionSnapshot snap = (*built)->snapshot();
+    const PreparedScene& p = (*built)->prepared();
     double inside = 0.0, outside = 0.0;
     int insideCount = 0, outsideCount = 0;
     for (const InputFace& f : p.faces) {

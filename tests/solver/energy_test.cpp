@@ -38,7 +38,7 @@ model::Scene openScene()
     return scene;
 }
 
-std::unique_ptr<Solver> make(const model::Scene& scene, VisibilityMode mode)
+std::unique_ptr<Solver> make(const model::Scene& scene, model::Visibility mode)
 {
     SolverOptions options;
     options.hemicube = 64;
@@ -48,15 +48,15 @@ std::unique_ptr<Solver> make(const model::Scene& scene, VisibilityMode mode)
     // subdivision: adaptive_solver_test.cpp).
     options.adaptive = false;
     auto built = Solver::create(scene, options);
-    EXPECT_TRUE(built.solver);
-    return std::move(built.solver);
+    EXPECT_TRUE(built.ok());
+    return std::move(*built);
 }
 
 } // namespace
 
 TEST(Energy, BalanceHoldsPerChannelBeforeAndAfterEveryShotInAnOpenScene)
 {
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         auto solver = make(openScene(), mode);
         ASSERT_TRUE(solver);
         expectBalanced(solver->stats());
@@ -73,7 +73,7 @@ TEST(Energy, BalanceHoldsPerChannelBeforeAndAfterEveryShotInAnOpenScene)
 
 TEST(Energy, EmittedPowerIsExitanceTimesArea)
 {
-    auto solver = make(openScene(), VisibilityMode::Painter);
+    auto solver = make(openScene(), model::Visibility::Painter);
     ASSERT_TRUE(solver);
     // lamp1: 1 m^2 at (10, 6, 2); lamp2: 0.25 m^2 at (1, 3, 9).
     const Rgb emitted = solver->stats().energy.emitted;
@@ -91,7 +91,7 @@ TEST(Energy, NothingEscapesAClosedRoom)
     test::addBox(scene, "room", {0, 0, 0}, {3, 2.5, 4}, "wall", true);
     test::addBox(scene, "block", {1, 0, 1}, {2, 1, 2}, "wall");
     test::addPolygon(scene, "lamp", {{1, 2.4, 1}, {2, 2.4, 1}, {2, 2.4, 2}, {1, 2.4, 2}}, "lamp");
-    auto solver = make(scene, VisibilityMode::Painter);
+    auto solver = make(scene, model::Visibility::Painter);
     ASSERT_TRUE(solver);
     solver->step(200);
     const SolverStats s = solver->stats();

@@ -17,7 +17,7 @@ constexpr double kRho = 0.5;
 // Emitter and receiver are unit squares; the emitter absorbs everything so
 // that only its own light reaches the receiver.
 double measuredFormFactor(const model::Scene& scene, int hemicube, double patchSize,
-                          VisibilityMode mode = VisibilityMode::Painter)
+                          model::Visibility mode = model::Visibility::Painter)
 {
     SolverOptions options;
     options.hemicube = hemicube;
@@ -28,12 +28,12 @@ double measuredFormFactor(const model::Scene& scene, int hemicube, double patchS
     options.convergence = 1e-9;
     options.visibility = mode;
     auto built = Solver::create(scene, options);
-    EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
-    if (!built.solver)
+    EXPECT_TRUE(built.ok()) << (built.diagnostics().empty() ? "" : built.diagnostics()[0].message);
+    if (!built.ok())
         return -1.0;
     std::atomic<bool> cancel{false};
-    built.solver->run({}, cancel);
-    for (const FaceResult& f : built.solver->faceResults())
+    (*built)->run({}, cancel);
+    for (const FaceResult& f : (*built)->faceResults())
         if (f.id == "receiver.face")
             return f.radiosity.g / kRho;
     ADD_FAILURE() << "no receiver face";
@@ -72,7 +72,7 @@ TEST(FormFactor, PerpendicularUnitSquaresSharingAnEdgeExchange0_20004)
 TEST(FormFactor, ZBufferGivesTheSameParallelSquaresFormFactor)
 {
     const auto scene = emitterAndReceiver({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}});
-    EXPECT_NEAR(measuredFormFactor(scene, 150, 0.1, VisibilityMode::ZBuffer), 0.19982, 0.01 * 0.19982);
+    EXPECT_NEAR(measuredFormFactor(scene, 150, 0.1, model::Visibility::ZBuffer), 0.19982, 0.01 * 0.19982);
 }
 
 TEST(FormFactor, OneHemicubeAtTheCentreOfALargePatchShowsTheProximityError)
@@ -86,11 +86,11 @@ TEST(FormFactor, OneHemicubeAtTheCentreOfALargePatchShowsTheProximityError)
     options.elementsPerPatch = 1;
     options.adaptive = false; // form factors of the mesh as meshed
     auto built = Solver::create(scene, options);
-    ASSERT_TRUE(built.solver);
-    ASSERT_EQ(built.solver->prepared().patches.size(), 4u); // two squares, two triangles each
-    built.solver->step(2); // both emitter triangles, each from its own centroid
+    ASSERT_TRUE(built.ok());
+    ASSERT_EQ((*built)->prepared().patches.size(), 4u); // two squares, two triangles each
+    (*built)->step(2); // both emitter triangles, each from its own centroid
     double received = 0.0;
-    for (const FaceResult& f : built.solver->faceResults())
+    for (const FaceResult& f : (*built)->faceResults())
         if (f.id == "receiver.face")
             received = f.radiosity.g / kRho;
     // Triangle centroids sit off the square's centre: the single-point estimate

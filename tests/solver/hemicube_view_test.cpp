@@ -13,7 +13,7 @@ using namespace regio::solver;
 
 namespace {
 
-std::unique_ptr<Solver> cornellSolver(VisibilityMode mode)
+std::unique_ptr<Solver> cornellSolver(model::Visibility mode)
 {
     SolverOptions options;
     options.hemicube = 64;
@@ -21,14 +21,14 @@ std::unique_ptr<Solver> cornellSolver(VisibilityMode mode)
     options.elementsPerPatch = 4;
     options.visibility = mode;
     auto built = Solver::create(test::loadSample("cornell-box.json"), options);
-    return std::move(built.solver);
+    return std::move(*built);
 }
 
 } // namespace
 
 TEST(HemicubeView, FormFactorsEqualThoseOfTheShotOfThatPatch)
 {
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         auto solver = cornellSolver(mode);
         ASSERT_TRUE(solver);
         const int shooter = solver->shooting().selectShooter();
@@ -47,9 +47,9 @@ TEST(HemicubeView, FormFactorsEqualThoseOfTheShotOfThatPatch)
 
 TEST(HemicubeView, ThePixelsOfTheFiveFacesNameTheElementsWithAFormFactor)
 {
-    auto solver = cornellSolver(VisibilityMode::Painter);
+    auto solver = cornellSolver(model::Visibility::Painter);
     ASSERT_TRUE(solver);
-    const auto view = renderHemicubeView(solver->prepared(), 0, 32, VisibilityMode::Painter);
+    const auto view = renderHemicubeView(solver->prepared(), 0, 32, model::Visibility::Painter);
     ASSERT_TRUE(view);
     std::set<ItemId> seen(view->buffer.all().begin(), view->buffer.all().end());
     double total = view->escaped + view->blocked;
@@ -64,9 +64,9 @@ TEST(HemicubeView, ThePixelsOfTheFiveFacesNameTheElementsWithAFormFactor)
 
 TEST(HemicubeView, AnUnknownPatchGivesNoView)
 {
-    auto solver = cornellSolver(VisibilityMode::Painter);
+    auto solver = cornellSolver(model::Visibility::Painter);
     ASSERT_TRUE(solver);
-    EXPECT_FALSE(renderHemicubeView(solver->prepared(), -1, 32, VisibilityMode::Painter));
+    EXPECT_FALSE(renderHemicubeView(solver->prepared(), -1, 32, model::Visibility::Painter));
     EXPECT_FALSE(renderHemicubeView(solver->prepared(), int(solver->prepared().patches.size()), 32,
-                                    VisibilityMode::Painter));
+                                    model::Visibility::Painter));
 }

@@ -10,7 +10,7 @@
 
 namespace regio::test {
 
-using solver::LitMesh;
+using output::LitMesh;
 
 // Adds a triangle with its own three vertices (flat, as the solver's
 // elements); corners counter-clockwise seen from the front. Returns its index.

@@ -33,13 +33,13 @@ namespace {
 PreparedScene preparedSample(RegionsMode mode = RegionsMode::Authored)
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "two-lights-room.json";
-    model::SceneReadResult read = model::loadSceneFile(path.string());
-    EXPECT_TRUE(read.scene);
+    model::Result<model::Scene> read = model::loadSceneFile(path.string());
+    EXPECT_TRUE(read.ok());
     PrepareOptions options;
     options.regions = mode;
-    PrepareResult prepared = prepareScene(*read.scene, options);
-    EXPECT_TRUE(prepared.scene);
-    return prepared.scene ? std::move(*prepared.scene) : PreparedScene{};
+    model::Result<PreparedScene> prepared = prepareScene(*read, options);
+    EXPECT_TRUE(prepared.ok());
+    return prepared.ok() ? std::move(*prepared) : PreparedScene{};
 }
 
 // Patches spread over the scene (every k-th), always including the emitters.
@@ -110,7 +110,7 @@ TEST(PainterOrder, PaintsTheSamePiecesAndCullsTheSameRegionsAsThePainter)
     const PreparedScene s = preparedSample();
     const Hemicube hemicube(64);
     for (int patch : shooterSample(s, 40)) {
-        Visibility painter(s, hemicube, VisibilityMode::Painter);
+        Visibility painter(s, hemicube, model::Visibility::Painter);
         ItemBuffer buffer = painter.makeBuffer();
         ASSERT_TRUE(painter.render(frameOf(s, patch), buffer));
         const PainterOrder order = painterOrderFromPatch(s, patch);
@@ -129,7 +129,7 @@ TEST(PainterOrder, RepaintedWithTheSolversRasteriserGivesThePaintersItemBuffer)
     int compared = 0, reversedDiffers = 0;
     for (int patch : shooterSample(s, 25)) {
         const ShooterFrame frame = frameOf(s, patch);
-        Visibility painter(s, hemicube, VisibilityMode::Painter);
+        Visibility painter(s, hemicube, model::Visibility::Painter);
         ItemBuffer expected = painter.makeBuffer();
         ASSERT_TRUE(painter.render(frame, expected));
         const ItemBuffer replayed = paintPlayback(s, hemicube, frame, painterOrderFromPatch(s, patch));

@@ -24,9 +24,9 @@ PreparedScene prepare(const model::Scene& scene, RegionsMode mode)
     PrepareOptions options;
     options.regions = mode;
     options.autoRegionPatchThreshold = 100;
-    PrepareResult r = prepareScene(scene, options);
-    EXPECT_TRUE(r.scene) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
-    return r.scene ? std::move(*r.scene) : PreparedScene{};
+    model::Result<PreparedScene> r = prepareScene(scene, options);
+    EXPECT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics()[0].message);
+    return r.ok() ? std::move(*r) : PreparedScene{};
 }
 
 struct NamedScene {

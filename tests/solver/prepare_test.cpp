@@ -24,11 +24,11 @@ PreparedScene prepareOk(const model::Scene& scene, RegionsMode mode, int autoThr
     PrepareOptions options;
     options.regions = mode;
     options.autoRegionPatchThreshold = autoThreshold;
-    PrepareResult result = prepareScene(scene, options);
-    for (const model::Diagnostic& d : result.diagnostics)
+    model::Result<PreparedScene> result = prepareScene(scene, options);
+    for (const model::Diagnostic& d : result.diagnostics())
         ADD_FAILURE() << d.pointer << ": " << d.message;
-    EXPECT_TRUE(result.scene.has_value());
-    return result.scene ? std::move(*result.scene) : PreparedScene{};
+    EXPECT_TRUE(result.ok());
+    return result.ok() ? std::move(*result) : PreparedScene{};
 }
 
 double inputArea(const PreparedScene& s)
@@ -158,11 +158,11 @@ TEST(Prepare, OptionsOverrideThePatchSizeAndElementRatio)
     PrepareOptions options;
     options.patchSize = 0.25;
     options.elementsPerPatch = 1;
-    PrepareResult result = prepareScene(twoBoxes(), options);
-    ASSERT_TRUE(result.scene);
-    EXPECT_EQ(result.scene->patchSize, 0.25);
-    EXPECT_EQ(result.scene->elements.size(), result.scene->patches.size());
-    EXPECT_EQ(result.scene->patches.size(), 12u * 32u); // a unit square: 4 strips x 8 triangles
+    model::Result<PreparedScene> result = prepareScene(twoBoxes(), options);
+    ASSERT_TRUE(result.ok());
+    EXPECT_EQ(result->patchSize, 0.25);
+    EXPECT_EQ(result->elements.size(), result->patches.size());
+    EXPECT_EQ(result->patches.size(), 12u * 32u); // a unit square: 4 strips x 8 triangles
 }
 
 TEST(Prepare, RefusesRegionsThatNoPlaneSeparatesNamingThem)
@@ -170,36 +170,36 @@ TEST(Prepare, RefusesRegionsThatNoPlaneSeparatesNamingThem)
     model::Scene scene = twoBoxes();
     scene.regions.push_back({"left", "", {0, 0, 0}, {2, 2, 2}, {}});
     scene.regions.push_back({"right", "", {1, 0, 0}, {4, 2, 2}, {}});
-    PrepareResult result = prepareScene(scene);
-    EXPECT_FALSE(result.scene);
-    ASSERT_EQ(result.diagnostics.size(), 1u);
-    EXPECT_TRUE(result.diagnostics[0].isError());
-    EXPECT_NE(result.diagnostics[0].message.find("'left', 'right'"), std::string::npos);
-    EXPECT_EQ(result.diagnostics[0].pointer, "/regions/0");
+    model::Result<PreparedScene> result = prepareScene(scene);
+    EXPECT_FALSE(result.ok());
+    ASSERT_EQ(result.diagnostics().size(), 1u);
+    EXPECT_TRUE(result.diagnostics()[0].isError());
+    EXPECT_NE(result.diagnostics()[0].message.find("'left', 'right'"), std::string::npos);
+    EXPECT_EQ(result.diagnostics()[0].pointer, "/regions/0");
     // Without regions the same scene prepares fine.
     PrepareOptions none;
     none.regions = RegionsMode::None;
-    EXPECT_TRUE(prepareScene(scene, none).scene);
+    EXPECT_TRUE(prepareScene(scene, none).ok());
 }
 
 TEST(Prepare, RefusesUnknownMaterialsAndNonConvexFacesWithTheirPointers)
 {
     model::Scene scene = twoBoxes();
     scene.objects[0].parts[0].faces[2].material = "nowhere";
-    PrepareResult result = prepareScene(scene);
-    EXPECT_FALSE(result.scene);
-    ASSERT_FALSE(result.diagnostics.empty());
-    EXPECT_EQ(result.diagnostics[0].pointer, "/objects/0/parts/0/faces/2/material");
+    model::Result<PreparedScene> result = prepareScene(scene);
+    EXPECT_FALSE(result.ok());
+    ASSERT_FALSE(result.diagnostics().empty());
+    EXPECT_EQ(result.diagnostics()[0].pointer, "/objects/0/parts/0/faces/2/material");
 
     model::Scene arrow;
     arrow.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {0, 0, 0}});
     model::Part part{"p", "", "white", {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}}, {{"p.f", {0, 1, 2, 3, 4}, ""}}};
     arrow.objects.push_back({"o", "", {part}});
     result = prepareScene(arrow);
-    EXPECT_FALSE(result.scene);
-    ASSERT_EQ(result.diagnostics.size(), 1u);
-    EXPECT_EQ(result.diagnostics[0].pointer, "/objects/0/parts/0/faces/0/loop");
-    EXPECT_EQ(result.diagnostics[0].idPath, (std::vector<std::string>{"o", "p", "p.f"}));
+    EXPECT_FALSE(result.ok());
+    ASSERT_EQ(result.diagnostics().size(), 1u);
+    EXPECT_EQ(result.diagnostics()[0].pointer, "/objects/0/parts/0/faces/0/loop");
+    EXPECT_EQ(result.diagnostics()[0].idPath, (std::vector<std::string>{"o", "p", "p.f"}));
 }
 
 TEST(Prepare, KeepsAZeroAreaFaceInTheTableWithAWarningAndNoElements)
@@ -207,23 +207,23 @@ TEST(Prepare, KeepsAZeroAreaFaceInTheTableWithAWarningAndNoElements)
     model::Scene scene = twoBoxes();
     model::Part flat{"flat", "", "white", {{5, 0, 0}, {6, 0, 0}, {7, 0, 0}}, {{"flat.f", {0, 1, 2}, ""}}};
     scene.objects.push_back({"line", "", {flat}});
-    PrepareResult result = prepareScene(scene);
-    ASSERT_TRUE(result.scene);
-    ASSERT_EQ(result.diagnostics.size(), 1u);
-    EXPECT_FALSE(result.diagnostics[0].isError());
-    EXPECT_EQ(result.scene->faces.back().id, "flat.f");
-    EXPECT_EQ(result.scene->faces.back().area, 0.0);
-    EXPECT_TRUE(result.scene->faces.back().elements.empty());
-    EXPECT_EQ(result.scene->stats.inputFaces, 12);
+    model::Result<PreparedScene> result = prepareScene(scene);
+    ASSERT_TRUE(result.ok());
+    ASSERT_EQ(result.diagnostics().size(), 1u);
+    EXPECT_FALSE(result.diagnostics()[0].isError());
+    EXPECT_EQ(result->faces.back().id, "flat.f");
+    EXPECT_EQ(result->faces.back().area, 0.0);
+    EXPECT_TRUE(result->faces.back().elements.empty());
+    EXPECT_EQ(result->stats.inputFaces, 12);
 }
 
 TEST(Prepare, AnEmptySceneIsOneEmptyRegion)
 {
-    PrepareResult result = prepareScene(model::Scene{});
-    ASSERT_TRUE(result.scene);
-    EXPECT_EQ(result.scene->regions.size(), 1u);
-    EXPECT_EQ(result.scene->regions[0].bspRoot, -1);
-    EXPECT_TRUE(result.scene->elements.empty());
+    model::Result<PreparedScene> result = prepareScene(model::Scene{});
+    ASSERT_TRUE(result.ok());
+    EXPECT_EQ(result->regions.size(), 1u);
+    EXPECT_EQ(result->regions[0].bspRoot, -1);
+    EXPECT_TRUE(result->elements.empty());
 }
 
 TEST(Prepare, PreparesTheSampleScenesInEveryRegionMode)
@@ -233,23 +233,23 @@ TEST(Prepare, PreparesTheSampleScenesInEveryRegionMode)
     for (const char* name : {"cornell-box.json", "two-lights-room.json"}) {
         const std::filesystem::path path = folder / name;
         ASSERT_TRUE(std::filesystem::exists(path)) << path;
-        model::SceneReadResult read = model::loadSceneFile(path.string());
-        ASSERT_TRUE(read.scene) << path;
+        model::Result<model::Scene> read = model::loadSceneFile(path.string());
+        ASSERT_TRUE(read.ok()) << path;
         ++scenes;
         double area = -1.0;
         for (RegionsMode mode : {RegionsMode::None, RegionsMode::Authored, RegionsMode::Auto}) {
             PrepareOptions options;
             options.regions = mode;
-            PrepareResult result = prepareScene(*read.scene, options);
-            ASSERT_TRUE(result.scene) << name;
-            const PrepareStats& st = result.scene->stats;
+            model::Result<PreparedScene> result = prepareScene(*read, options);
+            ASSERT_TRUE(result.ok()) << name;
+            const PrepareStats& st = result->stats;
             if (area < 0.0)
                 area = st.area;
             EXPECT_NEAR(st.area, area, 1e-9 * area);
             std::printf("%-22s %-8s regions %3zu  faces %4d  pieces %4d  fragments %4d  splits %4d  depth %3d  "
                         "patches %5d  elements %6d\n",
                         name, mode == RegionsMode::None ? "none" : mode == RegionsMode::Authored ? "authored" : "auto",
-                        result.scene->regions.size(), st.inputFaces, st.regionPieces, st.fragments, st.splits,
+                        result->regions.size(), st.inputFaces, st.regionPieces, st.fragments, st.splits,
                         st.maxDepth, st.patches, st.elements);
         }
     }

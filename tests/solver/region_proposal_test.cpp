@@ -24,9 +24,9 @@ namespace {
 model::Scene twoLightsRoom()
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "two-lights-room.json";
-    model::SceneReadResult read = model::loadSceneFile(path.string());
-    EXPECT_TRUE(read.scene) << path;
-    return read.scene ? *read.scene : model::Scene{};
+    model::Result<model::Scene> read = model::loadSceneFile(path.string());
+    EXPECT_TRUE(read.ok()) << path;
+    return read.ok() ? *read : model::Scene{};
 }
 
 Box3 boxOf(const model::Region& region)
@@ -43,11 +43,25 @@ double volume(const Box3& box)
     return s.x * s.y * s.z;
 }
 
+PrepareOptions noRegions()
+{
+    PrepareOptions options;
+    options.regions = RegionsMode::None;
+    return options;
+}
+
+PrepareOptions automaticRegions()
+{
+    PrepareOptions options;
+    options.regions = RegionsMode::Auto;
+    return options;
+}
+
 Box3 sceneBounds(const model::Scene& scene)
 {
-    PrepareResult prepared = prepareScene(scene, bspStageOptions({RegionsMode::None}));
-    EXPECT_TRUE(prepared.scene);
-    return prepared.scene ? prepared.scene->bounds : Box3{};
+    model::Result<PreparedScene> prepared = prepareBsp(scene, noRegions());
+    EXPECT_TRUE(prepared.ok());
+    return prepared.ok() ? prepared->bounds : Box3{};
 }
 
 void expectTiling(const std::vector<model::Region>& regions, const Box3& bounds)
@@ -66,9 +80,9 @@ void expectTiling(const std::vector<model::Region>& regions, const Box3& bounds)
 
 SceneBspFigures figuresOk(const model::Scene& scene, RegionsMode mode)
 {
-    BspFiguresResult result = computeBspFigures(scene, {mode});
-    EXPECT_TRUE(result.figures);
-    return result.figures ? *result.figures : SceneBspFigures{};
+    model::Result<SceneBspFigures> result = computeBspFigures(scene, {mode});
+    EXPECT_TRUE(result.ok());
+    return result.ok() ? *result : SceneBspFigures{};
 }
 
 // The scene as one region with the suggested order: the best single BSP.
@@ -108,9 +122,9 @@ void printRow(const char* scene, const char* setup, const SceneBspFigures& f)
 TEST(RegionProposal, TilesTheSceneBoundsWithTouchingBoxes)
 {
     for (const model::Scene& scene : {twoLightsRoom(), test_scenes::furnishedRoom(1, 100)}) {
-        const RegionProposal proposal = proposeRegions(scene);
-        ASSERT_GT(proposal.regions.size(), 1u);
-        expectTiling(proposal.regions, sceneBounds(scene));
+        const model::Result<RegionProposal> proposal = proposeRegions(scene);
+        ASSERT_GT(proposal->regions.size(), 1u);
+        expectTiling(proposal->regions, sceneBounds(scene));
     }
 }
 
@@ -119,9 +133,9 @@ TEST(RegionProposal, WithGapsOnlyPlacesItsPlanesBetweenPartsSoOnlyTheRoomShellIs
     const model::Scene scene = test_scenes::furnishedRoom(1, 100);
     RegionProposalOptions gapsOnly;
     gapsOnly.cutParts = false;
-    const RegionProposal proposal = proposeRegions(scene, gapsOnly);
-    EXPECT_EQ(proposal.straddlingParts, (std::vector<std::string>{"room.shell"}));
-    const model::Scene proposed = withRegions(scene, proposal.regions);
+    const model::Result<RegionProposal> proposal = proposeRegions(scene, gapsOnly);
+    EXPECT_EQ(proposal->straddlingParts, (std::vector<std::string>{"room.shell"}));
+    const model::Scene proposed = withRegions(scene, proposal->regions);
     for (const model::Object& object : proposed.objects)
         for (const model::Part& part : object.parts)
             if (part.id != "room.shell") {
@@ -132,22 +146,22 @@ TEST(RegionProposal, WithGapsOnlyPlacesItsPlanesBetweenPartsSoOnlyTheRoomShellIs
 TEST(RegionProposal, GivesAValidSceneWhoseOnlyWarningsAreTheCutPartsAndClippingThemClearsThem)
 {
     const model::Scene scene = test_scenes::furnishedRoom(1, 100);
-    const RegionProposal proposal = proposeRegions(scene);
-    ASSERT_FALSE(proposal.straddlingParts.empty());
-    EXPECT_EQ(proposal.straddlingParts.front(), "room.shell");
-    model::Scene proposed = withRegions(scene, proposal.regions);
+    const model::Result<RegionProposal> proposal = proposeRegions(scene);
+    ASSERT_FALSE(proposal->straddlingParts.empty());
+    EXPECT_EQ(proposal->straddlingParts.front(), "room.shell");
+    model::Scene proposed = withRegions(scene, proposal->regions);
     for (const model::Diagnostic& d : model::validateScene(proposed)) {
         EXPECT_FALSE(d.isError()) << d.pointer << ": " << d.message;
         EXPECT_NE(d.message.find("straddles"), std::string::npos) << d.message;
         ASSERT_GE(d.idPath.size(), 2u);
-        EXPECT_EQ(std::count(proposal.straddlingParts.begin(), proposal.straddlingParts.end(), d.idPath[1]), 1)
+        EXPECT_EQ(std::count(proposal->straddlingParts.begin(), proposal->straddlingParts.end(), d.idPath[1]), 1)
             << d.message;
     }
-    for (const std::string& part : proposal.straddlingParts) {
+    for (const std::string& part : proposal->straddlingParts) {
         auto clip = model::clipPartToRegions(proposed, part);
         ASSERT_TRUE(clip) << part << ": " << clip.error().message;
         if (part == "room.shell") {
-            EXPECT_EQ(clip->pieces.size(), proposal.regions.size()) << "one piece of the shell per region";
+            EXPECT_EQ(clip->pieces.size(), proposal->regions.size()) << "one piece of the shell per region";
         }
     }
     // Left: no errors, no straddling part. The room's pieces are open shells
@@ -165,33 +179,33 @@ TEST(RegionProposal, GivesAValidSceneWhoseOnlyWarningsAreTheCutPartsAndClippingT
 TEST(RegionProposal, GivesEachRegionTheSuggestedOrderAndTheSolversFigures)
 {
     const model::Scene scene = twoLightsRoom();
-    const RegionProposal proposal = proposeRegions(scene);
-    ASSERT_TRUE(proposal.figures);
-    EXPECT_TRUE(proposal.diagnostics.empty());
-    const model::Scene proposed = withRegions(scene, proposal.regions);
+    const model::Result<RegionProposal> proposal = proposeRegions(scene);
+    ASSERT_TRUE(proposal.ok());
+    EXPECT_TRUE(proposal.diagnostics().empty());
+    const model::Scene proposed = withRegions(scene, proposal->regions);
     auto suggestions = suggestBspOrders(withRegions(scene, [&] {
-        std::vector<model::Region> bare = proposal.regions;
+        std::vector<model::Region> bare = proposal->regions;
         for (model::Region& r : bare)
             r.bspOrder.clear();
         return bare;
     }()));
     ASSERT_TRUE(suggestions);
-    for (size_t r = 0; r < proposal.regions.size(); ++r) {
-        EXPECT_EQ(proposal.regions[r].bspOrder, (*suggestions)[r].order) << proposal.regions[r].id;
-        EXPECT_EQ(proposal.figures->regions[r].figures, (*suggestions)[r].suggested) << proposal.regions[r].id;
+    for (size_t r = 0; r < proposal->regions.size(); ++r) {
+        EXPECT_EQ(proposal->regions[r].bspOrder, (*suggestions)[r].order) << proposal->regions[r].id;
+        EXPECT_EQ(proposal->figures.regions[r].figures, (*suggestions)[r].suggested) << proposal->regions[r].id;
     }
     const SceneBspFigures figures = figuresOk(proposed, RegionsMode::Authored);
-    EXPECT_EQ(figures.fragments, proposal.figures->fragments);
-    EXPECT_EQ(figures.maxDepth, proposal.figures->maxDepth);
+    EXPECT_EQ(figures.fragments, proposal->figures.fragments);
+    EXPECT_EQ(figures.maxDepth, proposal->figures.maxDepth);
 }
 
 TEST(RegionProposal, CanLeaveTheOrdersEmpty)
 {
     RegionProposalOptions options;
     options.suggestOrders = false;
-    const RegionProposal proposal = proposeRegions(twoLightsRoom(), options);
-    ASSERT_FALSE(proposal.regions.empty());
-    for (const model::Region& region : proposal.regions)
+    const model::Result<RegionProposal> proposal = proposeRegions(twoLightsRoom(), options);
+    ASSERT_FALSE(proposal->regions.empty());
+    for (const model::Region& region : proposal->regions)
         EXPECT_TRUE(region.bspOrder.empty());
 }
 
@@ -201,18 +215,18 @@ TEST(RegionProposal, KeepsASmallSceneInOneRegion)
     scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
     scene.objects.push_back({"a", "", {*model::makeBox("a.body", {0, 0, 0}, {1, 1, 1}, "white")}});
     scene.objects.push_back({"b", "", {*model::makeBox("b.body", {2, 0, 0}, {3, 1, 1}, "white")}});
-    const RegionProposal proposal = proposeRegions(scene);
-    ASSERT_EQ(proposal.regions.size(), 1u);
-    EXPECT_EQ(proposal.regions[0].id, "region-1");
-    expectTiling(proposal.regions, sceneBounds(scene));
+    const model::Result<RegionProposal> proposal = proposeRegions(scene);
+    ASSERT_EQ(proposal->regions.size(), 1u);
+    EXPECT_EQ(proposal->regions[0].id, "region-1");
+    expectTiling(proposal->regions, sceneBounds(scene));
 
     RegionProposalOptions fine;
     fine.patchThreshold = 1;
-    const RegionProposal split = proposeRegions(scene, fine);
-    ASSERT_EQ(split.regions.size(), 2u) << "the gap between the boxes is the only plane";
-    EXPECT_GT(split.regions[0].max.x, 1.0);
-    EXPECT_LT(split.regions[0].max.x, 2.0);
-    EXPECT_TRUE(split.straddlingParts.empty());
+    const model::Result<RegionProposal> split = proposeRegions(scene, fine);
+    ASSERT_EQ(split->regions.size(), 2u) << "the gap between the boxes is the only plane";
+    EXPECT_GT(split->regions[0].max.x, 1.0);
+    EXPECT_LT(split->regions[0].max.x, 2.0);
+    EXPECT_TRUE(split->straddlingParts.empty());
 }
 
 TEST(RegionProposal, GivesAFlatSceneRegionsWithAThickness)
@@ -225,11 +239,11 @@ TEST(RegionProposal, GivesAFlatSceneRegionsWithAThickness)
     floor.vertices = {{0, 0, 0}, {0, 0, 2}, {3, 0, 2}, {3, 0, 0}};
     floor.faces = {{"floor.panel.top", {0, 1, 2, 3}, ""}};
     scene.objects.push_back({"floor", "", {floor}});
-    const RegionProposal proposal = proposeRegions(scene);
-    ASSERT_EQ(proposal.regions.size(), 1u);
-    EXPECT_LT(proposal.regions[0].min.y, 0.0);
-    EXPECT_GT(proposal.regions[0].max.y, 0.0);
-    EXPECT_FALSE(model::hasErrors(model::validateScene(withRegions(scene, proposal.regions))));
+    const model::Result<RegionProposal> proposal = proposeRegions(scene);
+    ASSERT_EQ(proposal->regions.size(), 1u);
+    EXPECT_LT(proposal->regions[0].min.y, 0.0);
+    EXPECT_GT(proposal->regions[0].max.y, 0.0);
+    EXPECT_FALSE(model::hasErrors(model::validateScene(withRegions(scene, proposal->regions))));
 }
 
 TEST(RegionProposal, SplitsAlongTheOnlyAxisThatHasAGap)
@@ -241,10 +255,10 @@ TEST(RegionProposal, SplitsAlongTheOnlyAxisThatHasAGap)
                                            *model::makeBox("slabs.b", {1, 0, 0.3}, {4, 1, 0.5}, "white")}});
     RegionProposalOptions fine;
     fine.patchThreshold = 1;
-    const RegionProposal proposal = proposeRegions(scene, fine);
-    ASSERT_EQ(proposal.regions.size(), 2u);
-    EXPECT_NEAR(proposal.regions[0].max.z, 0.25, 1e-12);
-    EXPECT_TRUE(proposal.straddlingParts.empty());
+    const model::Result<RegionProposal> proposal = proposeRegions(scene, fine);
+    ASSERT_EQ(proposal->regions.size(), 2u);
+    EXPECT_NEAR(proposal->regions[0].max.z, 0.25, 1e-12);
+    EXPECT_TRUE(proposal->straddlingParts.empty());
 }
 
 TEST(RegionProposal, KeepsPartsThatNoPlaneSeparatesTogether)
@@ -262,16 +276,16 @@ TEST(RegionProposal, KeepsPartsThatNoPlaneSeparatesTogether)
     RegionProposalOptions fine;
     fine.patchThreshold = 1;
     fine.cutParts = false;
-    const RegionProposal whole = proposeRegions(scene, fine);
-    EXPECT_EQ(whole.regions.size(), 1u);
-    EXPECT_TRUE(whole.straddlingParts.empty());
+    const model::Result<RegionProposal> whole = proposeRegions(scene, fine);
+    EXPECT_EQ(whole->regions.size(), 1u);
+    EXPECT_TRUE(whole->straddlingParts.empty());
 
     fine.cutParts = true;
-    const RegionProposal cut = proposeRegions(scene, fine);
-    EXPECT_GT(cut.regions.size(), 1u);
-    ASSERT_FALSE(cut.straddlingParts.empty());
-    EXPECT_LT(cut.straddlingParts.size(), 4u) << "a plane through the middle crosses two blocks, not all four";
-    expectTiling(cut.regions, sceneBounds(scene));
+    const model::Result<RegionProposal> cut = proposeRegions(scene, fine);
+    EXPECT_GT(cut->regions.size(), 1u);
+    ASSERT_FALSE(cut->straddlingParts.empty());
+    EXPECT_LT(cut->straddlingParts.size(), 4u) << "a plane through the middle crosses two blocks, not all four";
+    expectTiling(cut->regions, sceneBounds(scene));
 }
 
 TEST(RegionProposal, IgnoresTheScenesOwnRegionsAndPicksFreshIds)
@@ -279,14 +293,14 @@ TEST(RegionProposal, IgnoresTheScenesOwnRegionsAndPicksFreshIds)
     model::Scene scene = twoLightsRoom();
     model::Scene bare = scene;
     bare.regions.clear();
-    const RegionProposal a = proposeRegions(scene), b = proposeRegions(bare);
-    ASSERT_EQ(a.regions.size(), b.regions.size());
-    for (size_t r = 0; r < a.regions.size(); ++r)
-        EXPECT_EQ(a.regions[r], b.regions[r]);
+    const model::Result<RegionProposal> a = proposeRegions(scene), b = proposeRegions(bare);
+    ASSERT_EQ(a->regions.size(), b->regions.size());
+    for (size_t r = 0; r < a->regions.size(); ++r)
+        EXPECT_EQ(a->regions[r], b->regions[r]);
 
     scene.materials.push_back({"region-1", "", {0.5, 0.5, 0.5}, {0, 0, 0}});
-    const RegionProposal renamed = proposeRegions(scene);
-    EXPECT_EQ(renamed.regions[0].id, "region-1-2");
+    const model::Result<RegionProposal> renamed = proposeRegions(scene);
+    EXPECT_EQ(renamed->regions[0].id, "region-1-2");
 }
 
 TEST(RegionProposal, ReportsTheProblemsOfASceneThatCannotBePrepared)
@@ -294,9 +308,9 @@ TEST(RegionProposal, ReportsTheProblemsOfASceneThatCannotBePrepared)
     model::Scene scene = twoLightsRoom();
     scene.objects[0].parts[0].material = "nothing";
     scene.objects[0].parts[0].faces[0].material = "";
-    const RegionProposal proposal = proposeRegions(scene);
-    EXPECT_FALSE(proposal.figures);
-    EXPECT_TRUE(model::hasErrors(proposal.diagnostics));
+    const model::Result<RegionProposal> proposal = proposeRegions(scene);
+    EXPECT_FALSE(proposal.ok());
+    EXPECT_TRUE(model::hasErrors(proposal.diagnostics()));
 }
 
 TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOrdersBeatSceneOrder)
@@ -343,44 +357,44 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
 
         RegionProposalOptions gapsOnly;
         gapsOnly.cutParts = false;
-        const RegionProposal gaps = proposeRegions(c.scene, gapsOnly);
-        ASSERT_TRUE(gaps.figures);
-        row("proposed, gaps only, suggested orders", *gaps.figures);
-        EXPECT_LT(gaps.figures->fragments, single.fragments);
+        const model::Result<RegionProposal> gaps = proposeRegions(c.scene, gapsOnly);
+        ASSERT_TRUE(gaps.ok());
+        row("proposed, gaps only, suggested orders", gaps->figures);
+        EXPECT_LT(gaps->figures.fragments, single.fragments);
 
-        const RegionProposal proposal = proposeRegions(c.scene);
-        ASSERT_TRUE(proposal.figures);
+        const model::Result<RegionProposal> proposal = proposeRegions(c.scene);
+        ASSERT_TRUE(proposal.ok());
         const SceneBspFigures proposalSceneOrder =
             figuresOk(withRegions(c.scene, [&] {
-                          std::vector<model::Region> bare = proposal.regions;
+                          std::vector<model::Region> bare = proposal->regions;
                           for (model::Region& r : bare)
                               r.bspOrder.clear();
                           return bare;
                       }()),
                       RegionsMode::Authored);
         row("proposed, scene order", proposalSceneOrder);
-        row("proposed, suggested orders", *proposal.figures);
-        EXPECT_LT(proposal.figures->fragments, single.fragments);
+        row("proposed, suggested orders", proposal->figures);
+        EXPECT_LT(proposal->figures.fragments, single.fragments);
         // The sample is small enough for one tree with a good order to split
         // nothing; there regions only add the pieces of the clipped panels.
         if (c.scene.regions.empty()) {
-            EXPECT_LT(proposal.figures->fragments, singleSuggested.fragments);
+            EXPECT_LT(proposal->figures.fragments, singleSuggested.fragments);
         }
-        EXPECT_LE(proposal.figures->fragments, proposalSceneOrder.fragments);
+        EXPECT_LE(proposal->figures.fragments, proposalSceneOrder.fragments);
 
-        model::Scene clipped = withRegions(c.scene, proposal.regions);
-        for (const std::string& part : proposal.straddlingParts)
+        model::Scene clipped = withRegions(c.scene, proposal->regions);
+        for (const std::string& part : proposal->straddlingParts)
             ASSERT_TRUE(model::clipPartToRegions(clipped, part)) << part;
         row("proposed, cut parts clipped, suggested orders", figuresOk(withSuggestedOrders(clipped), RegionsMode::Authored));
-        std::printf("|   (%zu parts cut by the proposal, %zu without cutParts)\n", proposal.straddlingParts.size(),
-                    gaps.straddlingParts.size());
+        std::printf("|   (%zu parts cut by the proposal, %zu without cutParts)\n", proposal->straddlingParts.size(),
+                    gaps->straddlingParts.size());
 
         const SceneBspFigures automatic = figuresOk(sceneOrder, RegionsMode::Auto);
         row("automatic (patch count), scene order", automatic);
-        PrepareResult autoPrepared = prepareScene(sceneOrder, bspStageOptions({RegionsMode::Auto}));
-        ASSERT_TRUE(autoPrepared.scene);
+        model::Result<PreparedScene> autoPrepared = prepareBsp(sceneOrder, automaticRegions());
+        ASSERT_TRUE(autoPrepared.ok());
         std::vector<model::Region> autoRegions;
-        for (const Region& region : autoPrepared.scene->regions) {
+        for (const Region& region : autoPrepared->regions) {
             model::Region r;
             r.id = region.id;
             r.min = region.box.min;

@@ -35,7 +35,7 @@ Solution solve(const model::Scene& scene, RegionsMode regions)
     options.hemicube = 100;
     options.patchSize = 0.5;
     options.elementsPerPatch = 1;
-    options.visibility = VisibilityMode::Painter;
+    options.visibility = model::Visibility::Painter;
     options.regions = regions;
     options.autoRegionPatchThreshold = 100;
     options.maxIterations = 100000;
@@ -44,17 +44,17 @@ Solution solve(const model::Scene& scene, RegionsMode regions)
     // the equivalence (adaptive subdivision would follow each mode's noise).
     options.adaptive = false;
     auto built = Solver::create(scene, options);
-    EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
-    if (!built.solver)
+    EXPECT_TRUE(built.ok()) << (built.diagnostics().empty() ? "" : built.diagnostics()[0].message);
+    if (!built.ok())
         return {};
     Solution s;
-    s.regions = static_cast<int>(built.solver->prepared().regions.size());
-    s.patches = static_cast<int>(built.solver->prepared().patches.size());
-    s.elements = static_cast<int>(built.solver->prepared().elements.size());
-    s.lostPieces = built.solver->prepared().stats.lostPieces;
+    s.regions = static_cast<int>((*built)->prepared().regions.size());
+    s.patches = static_cast<int>((*built)->prepared().patches.size());
+    s.elements = static_cast<int>((*built)->prepared().elements.size());
+    s.lostPieces = (*built)->prepared().stats.lostPieces;
     std::atomic<bool> cancel{false};
-    EXPECT_EQ(built.solver->run({}, cancel), StopReason::Converged);
-    for (FaceResult& f : built.solver->faceResults())
+    EXPECT_EQ((*built)->run({}, cancel), StopReason::Converged);
+    for (FaceResult& f : (*built)->faceResults())
         s.faces[f.id] = f;
     return s;
 }

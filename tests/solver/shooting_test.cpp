@@ -41,8 +41,8 @@ std::unique_ptr<Solver> make(const model::Scene& scene, SolverOptions options = 
     if (!options.adaptive)
         options.adaptive = false; // shooting on a fixed mesh (adaptive_solver_test.cpp has the rest)
     auto built = Solver::create(scene, options);
-    EXPECT_TRUE(built.solver) << (built.diagnostics.empty() ? "" : built.diagnostics[0].message);
-    return std::move(built.solver);
+    EXPECT_TRUE(built.ok()) << (built.diagnostics().empty() ? "" : built.diagnostics()[0].message);
+    return std::move(*built);
 }
 
 std::string faceOfPatch(const PreparedScene& p, int patch)
@@ -135,10 +135,10 @@ TEST(Shooting, ReplacingTheElementStateRecomputesPatchPowersForAGrownMesh)
     // Adaptive subdivision (§5.7) hands over new per-element arrays; the patch
     // powers that choose the next shooter must follow them.
     const model::Scene scene = twoLamps();
-    const PrepareResult prepared = prepareScene(scene, {});
-    ASSERT_TRUE(prepared.scene);
-    const PreparedScene& p = *prepared.scene;
-    Shooting shooting(p, 32, VisibilityMode::Painter);
+    const model::Result<PreparedScene> prepared = prepareScene(scene, {});
+    ASSERT_TRUE(prepared.ok());
+    const PreparedScene& p = *prepared;
+    Shooting shooting(p, 32, model::Visibility::Painter);
     shooting.shoot();
     std::vector<Rgb> radiosity = shooting.radiosity();
     std::vector<Rgb> unshot(p.elements.size(), Rgb{0.0});
@@ -236,7 +236,7 @@ TEST(Shooting, BackFacesBlockLightFromOutsideAnOpenBox)
     // A box without a bottom stands over a small floor patch; its faces point
     // outwards, so from the patch only their backs are visible. A lamp above
     // the box must not light the patch (Appendix A would let it through).
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         model::Scene scene;
         test::addMaterial(scene, "grey", {0.5, 0.5, 0.5});
         test::addMaterial(scene, "lamp", {0.0, 0.0, 0.0}, {10.0, 10.0, 10.0});
@@ -255,10 +255,10 @@ TEST(Shooting, BackFacesBlockLightFromOutsideAnOpenBox)
         solver->run({}, cancel);
         for (const FaceResult& f : solver->faceResults()) {
             if (f.id == "inside.face") {
-                EXPECT_EQ(f.radiosity, Rgb(0.0)) << visibilityModeName(mode);
+                EXPECT_EQ(f.radiosity, Rgb(0.0)) << model::visibilityName(mode);
             }
             if (f.id == "outside.face") {
-                EXPECT_GT(f.radiosity.r, 0.1) << visibilityModeName(mode);
+                EXPECT_GT(f.radiosity.r, 0.1) << model::visibilityName(mode);
             }
         }
     }

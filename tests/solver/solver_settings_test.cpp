@@ -24,10 +24,10 @@ TEST(SolverSettings, TheScenesVisibilityAndRegionsModeAreUsedWhenNotOverridden)
     scene.solver.visibility = model::Visibility::ZBuffer;
     scene.solver.regions = model::RegionsMode::None;
     auto built = Solver::create(scene);
-    ASSERT_TRUE(built.solver);
-    EXPECT_EQ(built.solver->settings().visibility, VisibilityMode::ZBuffer);
-    EXPECT_EQ(built.solver->settings().regions, RegionsMode::None);
-    EXPECT_EQ(built.solver->prepared().regions.size(), 1u);
+    ASSERT_TRUE(built.ok());
+    EXPECT_EQ((*built)->settings().visibility, model::Visibility::ZBuffer);
+    EXPECT_EQ((*built)->settings().regions, RegionsMode::None);
+    EXPECT_EQ((*built)->prepared().regions.size(), 1u);
 }
 
 TEST(SolverSettings, OptionsOverrideTheScenesVisibilityAndRegionsMode)
@@ -36,13 +36,13 @@ TEST(SolverSettings, OptionsOverrideTheScenesVisibilityAndRegionsMode)
     scene.solver.visibility = model::Visibility::ZBuffer;
     scene.solver.regions = model::RegionsMode::None;
     SolverOptions options;
-    options.visibility = VisibilityMode::Painter;
+    options.visibility = model::Visibility::Painter;
     options.regions = RegionsMode::Authored;
     auto built = Solver::create(scene, options);
-    ASSERT_TRUE(built.solver);
-    EXPECT_EQ(built.solver->settings().visibility, VisibilityMode::Painter);
-    EXPECT_EQ(built.solver->settings().regions, RegionsMode::Authored);
-    EXPECT_EQ(built.solver->prepared().regions.size(), 2u);
+    ASSERT_TRUE(built.ok());
+    EXPECT_EQ((*built)->settings().visibility, model::Visibility::Painter);
+    EXPECT_EQ((*built)->settings().regions, RegionsMode::Authored);
+    EXPECT_EQ((*built)->prepared().regions.size(), 2u);
 }
 
 } // namespace

@@ -186,8 +186,8 @@ inline Scene conformingRegionScene()
 
 inline model::Scene loadSample(const std::string& name)
 {
-    model::SceneReadResult r = model::loadSceneFile(std::string(REGIO_SOURCE_DIR) + "/resources/scenes/" + name);
-    return r.scene ? *r.scene : model::Scene{};
+    model::Result<model::Scene> r = model::loadSceneFile(std::string(REGIO_SOURCE_DIR) + "/resources/scenes/" + name);
+    return r.ok() ? *r : model::Scene{};
 }
 
 } // namespace regio::test

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+using namespace regio::output;
 using namespace regio::solver;
 using regio::test::addQuad;
 using regio::test::sampleRoom;

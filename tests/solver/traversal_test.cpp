@@ -28,9 +28,9 @@ PreparedScene prepared(const model::Scene& scene, RegionsMode mode)
     PrepareOptions options;
     options.regions = mode;
     options.autoRegionPatchThreshold = 60;
-    PrepareResult result = prepareScene(scene, options);
-    EXPECT_TRUE(result.scene.has_value());
-    return std::move(*result.scene);
+    model::Result<PreparedScene> result = prepareScene(scene, options);
+    EXPECT_TRUE(result.ok());
+    return std::move(*result);
 }
 
 std::vector<int> positions(const std::vector<int>& order, size_t nodeCount)

@@ -20,9 +20,9 @@ PreparedScene prepare(const model::Scene& scene, RegionsMode mode = RegionsMode:
 {
     PrepareOptions options;
     options.regions = mode;
-    PrepareResult r = prepareScene(scene, options);
-    EXPECT_TRUE(r.scene) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
-    return r.scene ? std::move(*r.scene) : PreparedScene{};
+    model::Result<PreparedScene> r = prepareScene(scene, options);
+    EXPECT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics()[0].message);
+    return r.ok() ? std::move(*r) : PreparedScene{};
 }
 
 ShooterFrame frameOfPatch(const PreparedScene& p, const Patch& patch)
@@ -81,7 +81,7 @@ TEST(Visibility, AFullHemicubeInsideAClosedRoomSumsToOnePerShooter)
     test::addBox(scene, "shelf", {2.5, 1.5, 0.5}, {3.5, 1.6, 2.5}, "grey"); // floating
     const PreparedScene p = prepare(scene);
     Hemicube h(100);
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
         ItemBuffer buffer = vis.makeBuffer();
         std::vector<double> perItem;
@@ -98,9 +98,9 @@ TEST(Visibility, AFullHemicubeInsideAClosedRoomSumsToOnePerShooter)
             if (face == "block.body.ny")
                 continue;
             const bool covered = face == "room.body.ny" && perItem[kBlockerItem] > 0.5;
-            EXPECT_NEAR(receivers, covered ? 0.0 : 1.0, 1e-6) << "patch " << i << " " << visibilityModeName(mode);
+            EXPECT_NEAR(receivers, covered ? 0.0 : 1.0, 1e-6) << "patch " << i << " " << model::visibilityName(mode);
             EXPECT_NEAR(perItem[kBlockerItem], covered ? 1.0 : 0.0, 1e-6) << "patch " << i;
-            EXPECT_EQ(perItem[kEmptyItem], 0.0) << "patch " << i << " " << visibilityModeName(mode);
+            EXPECT_EQ(perItem[kEmptyItem], 0.0) << "patch " << i << " " << model::visibilityName(mode);
         }
     }
 }
@@ -112,8 +112,8 @@ TEST(Visibility, PainterItemBuffersEqualZBufferItemBuffersExceptOnEdgePixels)
         const model::Scene scene = test::randomRegionScene(seed, 3, 2);
         const PreparedScene p = prepare(scene);
         ASSERT_EQ(p.regions.size(), 6u);
-        Visibility painter(p, h, VisibilityMode::Painter);
-        Visibility zbuffer(p, h, VisibilityMode::ZBuffer);
+        Visibility painter(p, h, model::Visibility::Painter);
+        Visibility zbuffer(p, h, model::Visibility::ZBuffer);
         ItemBuffer a = painter.makeBuffer(), b = zbuffer.makeBuffer();
         Comparison total;
         for (size_t i = 0; i < p.patches.size(); i += 11) {
@@ -139,15 +139,15 @@ TEST(Visibility, PainterAndZBufferSolutionsAgreePerFaceWithinHalfAPercent)
         options.hemicube = 100;
         options.patchSize = 0.75;
         options.elementsPerPatch = 4;
-        options.visibility = m == 0 ? VisibilityMode::Painter : VisibilityMode::ZBuffer;
+        options.visibility = m == 0 ? model::Visibility::Painter : model::Visibility::ZBuffer;
         options.maxIterations = 100000;
         options.convergence = 2e-3;
         options.adaptive = false; // both on the same mesh
         auto built = Solver::create(scene, options);
-        ASSERT_TRUE(built.solver);
+        ASSERT_TRUE(built.ok());
         std::atomic<bool> cancel{false};
-        ASSERT_EQ(built.solver->run({}, cancel), StopReason::Converged);
-        results[m] = built.solver->faceResults();
+        ASSERT_EQ((*built)->run({}, cancel), StopReason::Converged);
+        results[m] = (*built)->faceResults();
     }
     ASSERT_EQ(results[0].size(), results[1].size());
     for (size_t i = 0; i < results[0].size(); ++i)
@@ -161,7 +161,7 @@ TEST(Visibility, RegionsBehindTheShooterPlaneAreCulledWhole)
     const model::Scene scene = test::randomRegionScene(1, 2, 1);
     const PreparedScene p = prepare(scene);
     Hemicube h(50);
-    Visibility painter(p, h, VisibilityMode::Painter);
+    Visibility painter(p, h, model::Visibility::Painter);
     ItemBuffer buffer = painter.makeBuffer();
     // The -x face of the box in the first cell looks away from the second cell.
     const auto it = std::find_if(p.patches.begin(), p.patches.end(), [&](const Patch& patch) {
@@ -182,7 +182,7 @@ TEST(Visibility, BackFacingElementsArePaintedAsBlockers)
     test::addPolygon(scene, "floor", {{-0.2, 0, -0.2}, {-0.2, 0, 0.2}, {0.2, 0, 0.2}, {0.2, 0, -0.2}}, "grey");
     const PreparedScene p = prepare(scene);
     Hemicube h(40);
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
         ItemBuffer buffer = vis.makeBuffer();
         const auto it = std::find_if(p.patches.begin(), p.patches.end(), [&](const Patch& patch) {
@@ -191,7 +191,7 @@ TEST(Visibility, BackFacingElementsArePaintedAsBlockers)
         ASSERT_NE(it, p.patches.end());
         vis.render(frameOfPatch(p, *it), buffer);
         std::set<ItemId> seen(buffer.all().begin(), buffer.all().end());
-        EXPECT_EQ(seen, std::set<ItemId>{kBlockerItem}) << visibilityModeName(mode);
+        EXPECT_EQ(seen, std::set<ItemId>{kBlockerItem}) << model::visibilityName(mode);
     }
 }
 
@@ -200,7 +200,7 @@ TEST(Visibility, ACancelledRenderStopsEarly)
     const model::Scene scene = test::randomRegionScene(3, 3, 3);
     const PreparedScene p = prepare(scene);
     Hemicube h(50);
-    for (VisibilityMode mode : {VisibilityMode::Painter, VisibilityMode::ZBuffer}) {
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
         ItemBuffer buffer = vis.makeBuffer();
         std::atomic<bool> cancel{true};

@@ -260,8 +260,8 @@ void TransformParts::redo()
         if (auto r = model::setPartGeometries(scene(), m_after); !r)
             return fail(r.error());
     } else {
-        if (auto invalid = model::checkAffineTransform(m_transform))
-            return fail(*invalid);
+        if (model::Check affine = model::checkAffineTransform(m_transform); !affine)
+            return fail(affine.error());
         auto before = m_target.empty() ? model::transformParts(scene(), m_partIds, m_transform)
                                        : model::setPartGeometries(scene(), m_target);
         if (!before)

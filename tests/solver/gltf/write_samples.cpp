@@ -13,14 +13,15 @@
 #include <iostream>
 
 using namespace regio;
+using namespace regio::output;
 using namespace regio::solver;
 
 namespace {
 
 bool write(const std::filesystem::path& path, const LitMesh& mesh, const DisplaySettings& display = {})
 {
-    if (auto error = writeLitModel(path.string(), mesh, prepareColours(mesh, display).colours)) {
-        std::cerr << *error << "\n";
+    if (model::Check written = writeLitModel(path.string(), mesh, prepareColours(mesh, display).colours); !written) {
+        std::cerr << written.error().message << "\n";
         return false;
     }
     return true;
@@ -39,21 +40,21 @@ LitMesh bigPlane()
 std::optional<LitMesh> solvedCornellBox()
 {
     const auto path = std::filesystem::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "cornell-box.json";
-    model::SceneReadResult read = model::loadSceneFile(path.string());
-    if (!read.scene) {
+    model::Result<model::Scene> read = model::loadSceneFile(path.string());
+    if (!read.ok()) {
         std::cerr << path.string() << ": cannot read the sample scene\n";
         return std::nullopt;
     }
     SolverOptions options;
     options.hemicube = 48;
     options.patchSize = 0.2;
-    auto built = Solver::create(*read.scene, options);
-    if (!built.solver) {
+    auto built = Solver::create(*read, options);
+    if (!built.ok()) {
         std::cerr << path.string() << ": the solver refused the sample scene\n";
         return std::nullopt;
     }
-    built.solver->step(40);
-    return litMeshFromSolution(built.solver->snapshot());
+    (*built)->step(40);
+    return litMeshFromSolution((*built)->snapshot());
 }
 
 } // namespace
