@@ -479,7 +479,7 @@ WingedEdgeMesh::WindingRepair WingedEdgeMesh::windingRepair() const
         }
         size_t against = 0;
         for (int f : piece)
-            against += sign[size_t(f)] < 0 ? 1 : 0;
+            against += sign[size_t(f)] < 0 ? 1u : 0u;
         // Flip the minority; on a tie keep the side of the piece's first face.
         const signed char flip = against * 2 <= piece.size() ? -1 : 1;
         for (int f : piece)
