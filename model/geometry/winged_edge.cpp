@@ -156,7 +156,8 @@ void WingedEdgeMesh::buildEdges(std::span<const std::vector<int>> loops)
                     break;
                 }
             }
-            auto faces = facesOfEdge(int(e));
+            // The faces of edge e as facesOfEdge gives them: its row of uses.
+            const auto faces = std::span<const int>(m_edgeUseFace).subspan(size_t(begin), size_t(count));
             m_problems.push_back({TopologyProblem::Kind::NonManifoldEdge, faces[2], -1, int(e),
                                   std::vector<int>(faces.begin(), faces.end())});
         }
