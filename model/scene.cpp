@@ -67,11 +67,11 @@ Part* Scene::findPart(const std::string& id)
 Scene::FaceLocation Scene::locateFace(const std::string& faceId) const
 {
     for (int o = 0; o < int(objects.size()); ++o) {
-        const auto& parts = objects[o].parts;
+        const auto& parts = objects[size_t(o)].parts;
         for (int p = 0; p < int(parts.size()); ++p) {
-            const auto& faces = parts[p].faces;
+            const auto& faces = parts[size_t(p)].faces;
             for (int f = 0; f < int(faces.size()); ++f)
-                if (faces[f].id == faceId)
+                if (faces[size_t(f)].id == faceId)
                     return {o, p, f};
         }
     }

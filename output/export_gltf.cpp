@@ -60,9 +60,10 @@ std::string uriEncode(const std::string& name)
 {
     static const char* hex = "0123456789ABCDEF";
     std::string out;
-    for (unsigned char c : name) {
+    for (const char byte : name) {
+        const auto c = static_cast<unsigned char>(byte);
         if (std::isalnum(c) != 0 || c == '-' || c == '_' || c == '.' || c == '~') {
-            out.push_back(static_cast<char>(c));
+            out.push_back(byte);
         } else {
             out.push_back('%');
             out.push_back(hex[c >> 4]);

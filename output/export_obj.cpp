@@ -76,7 +76,7 @@ model::Check writeObj(const std::string& path, const LitMesh& mesh, const Displa
             out += "g " + groupName(mesh.faceIds[static_cast<size_t>(group)]) + "\n";
         }
         out += "f";
-        for (int k = 0; k < 3; ++k) {
+        for (size_t k = 0; k < 3; ++k) {
             // OBJ indices are 1-based; position and normal share the index.
             const std::string i = std::to_string(mesh.indices[3 * t + k] + 1);
             out += " " + i + "//" + i;

@@ -59,7 +59,7 @@ model::Check writePly(const std::string& path, const LitMesh& mesh, const Displa
     }
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         out.push_back(3);
-        for (int k = 0; k < 3; ++k)
+        for (size_t k = 0; k < 3; ++k)
             appendU32(out, mesh.indices[3 * t + k]);
     }
     return model::writeFileAtomically(path, out);

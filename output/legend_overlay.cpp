@@ -71,10 +71,10 @@ void drawText(Image& image, int x, int y, const std::string& text, int scale, co
         const float* quad = v + q * 4 * kFloatsPerVertex;
         const float qx0 = quad[0], qy0 = quad[1];
         const float qx1 = quad[2 * kFloatsPerVertex], qy1 = quad[2 * kFloatsPerVertex + 1];
-        fillRect(image, x + static_cast<int>(std::lround(std::min(qx0, qx1) * scale)),
-                 y + static_cast<int>(std::lround(std::min(qy0, qy1) * scale)),
-                 x + static_cast<int>(std::lround(std::max(qx0, qx1) * scale)),
-                 y + static_cast<int>(std::lround(std::max(qy0, qy1) * scale)), colour);
+        fillRect(image, x + static_cast<int>(std::lround(std::min(qx0, qx1) * static_cast<float>(scale))),
+                 y + static_cast<int>(std::lround(std::min(qy0, qy1) * static_cast<float>(scale))),
+                 x + static_cast<int>(std::lround(std::max(qx0, qx1) * static_cast<float>(scale))),
+                 y + static_cast<int>(std::lround(std::max(qy0, qy1) * static_cast<float>(scale))), colour);
     }
 }
 

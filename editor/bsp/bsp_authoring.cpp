@@ -104,8 +104,10 @@ BspAuthoring::BspAuthoring(SceneDocument* document, Viewport* viewport, QWidget*
 
 BspAuthoring::~BspAuthoring()
 {
-    if (m_viewport && (m_viewport->tool() == m_insertTool.get() || m_viewport->tool() == m_playbackTool.get()))
-        m_viewport->setTool(nullptr);
+    // The guarded pointer is read once: each read may find the viewport gone.
+    Viewport* viewport = m_viewport;
+    if (viewport && (viewport->tool() == m_insertTool.get() || viewport->tool() == m_playbackTool.get()))
+        viewport->setTool(nullptr);
 }
 
 QString BspAuthoring::fragmentLayerName() { return QStringLiteral("bsp.fragments"); }
@@ -378,11 +380,13 @@ void BspAuthoring::startPlaybackPick(bool fromPatch)
 
 bool BspAuthoring::insertPickActive() const
 {
-    return m_insertTool && m_viewport && m_viewport->tool() == m_insertTool.get();
+    const Viewport* viewport = m_viewport;
+    return m_insertTool && viewport && viewport->tool() == m_insertTool.get();
 }
 bool BspAuthoring::playbackPickActive() const
 {
-    return m_playbackTool && m_viewport && m_viewport->tool() == m_playbackTool.get();
+    const Viewport* viewport = m_viewport;
+    return m_playbackTool && viewport && viewport->tool() == m_playbackTool.get();
 }
 
 void BspAuthoring::cancelTools()

@@ -110,8 +110,9 @@ PreviewController::PreviewController(SceneDocument* document, Viewport* viewport
 
 PreviewController::~PreviewController()
 {
-    if (m_viewport && m_viewport->tool() == m_inspector.get())
-        m_viewport->setTool(nullptr);
+    // The guarded pointer is read once: each read may find the viewport gone.
+    if (Viewport* viewport = m_viewport; viewport && viewport->tool() == m_inspector.get())
+        viewport->setTool(nullptr);
     // Layer jobs capture nothing of ours but post back to us: let them end.
     m_pool.waitForDone();
 }
@@ -166,10 +167,13 @@ void PreviewController::createActions()
     });
     connect(a.dryRun, &QAction::triggered, this, &PreviewController::showDryRun);
     connect(a.inspect, &QAction::toggled, this, [this](bool on) {
+        Viewport* viewport = m_viewport;
+        if (!viewport) // the window is closing
+            return;
         if (on)
-            m_viewport->setTool(m_inspector.get());
-        else if (m_viewport->tool() == m_inspector.get())
-            m_viewport->setTool(nullptr);
+            viewport->setTool(m_inspector.get());
+        else if (viewport->tool() == m_inspector.get())
+            viewport->setTool(nullptr);
     });
     connect(a.hemicube, &QAction::triggered, this, &PreviewController::showHemicube);
     connect(a.draft, &QAction::triggered, this, [this] { m_dock->applyPreset(SolverPreset::Draft); });

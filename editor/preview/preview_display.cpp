@@ -65,7 +65,7 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
         mesh.depthTest = true;
         mesh.order = 1;
         const solver::SolutionMesh& m = *frame.snapshot.mesh;
-        const MeshOverlayColours colours = meshOverlayColours(display);
+        const MeshOverlayColours edgeColours = meshOverlayColours(display);
         auto edgeKey = [](int a, int b) {
             return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
         };
@@ -76,7 +76,7 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
             for (size_t k = 0; k < 3; ++k) {
                 const int a = t[k], b = t[(k + 1) % 3];
                 if (seen.insert(edgeKey(a, b)).second) {
-                    mesh.lines.add(vertex(a), vertex(b), colours.element);
+                    mesh.lines.add(vertex(a), vertex(b), edgeColours.element);
                     ++out.elementEdges;
                 }
             }
@@ -88,7 +88,7 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
             for (size_t k = 0; k < 3; ++k) {
                 const int a = t[k], b = t[(k + 1) % 3];
                 if (seen.insert(edgeKey(a, b)).second) {
-                    mesh.lines.add(vertex(a), vertex(b), colours.anchoring);
+                    mesh.lines.add(vertex(a), vertex(b), edgeColours.anchoring);
                     ++out.anchoringEdges;
                 }
             }

@@ -77,11 +77,16 @@ RegionBoxTool::RegionBoxTool(SceneDocument* document, Viewport* viewport, QObjec
 
 RegionBoxTool::~RegionBoxTool()
 {
-    if (m_viewport && m_viewport->tool() == this)
-        m_viewport->setTool(nullptr);
+    if (Viewport* viewport = m_viewport; viewport && viewport->tool() == this)
+        viewport->setTool(nullptr);
 }
 
-bool RegionBoxTool::isActive() const { return m_viewport && m_viewport->tool() == this; }
+bool RegionBoxTool::isActive() const
+{
+    // The guarded pointer is read once: each read may find the viewport gone.
+    const Viewport* viewport = m_viewport;
+    return viewport && viewport->tool() == this;
+}
 
 void RegionBoxTool::setActive(bool on)
 {
@@ -181,8 +186,11 @@ std::optional<model::Vec3> RegionBoxTool::planePoint(const Ray& ray) const
 model::Box3 RegionBoxTool::boxFromFootprint(const model::Vec3& a, const model::Vec3& b) const
 {
     const model::Box3 extent = sceneExtent(m_document->scene());
-    const GizmoSnap& snap = m_viewport->snap();
-    const double defaultHeight = std::max(1.0, 10.0 * snap.step);
+    // Drawing happens in the viewport, so it is there; should it be gone, the
+    // default snap step sets the height.
+    const Viewport* viewport = m_viewport;
+    const double step = viewport ? viewport->snap().step : GizmoSnap{}.step;
+    const double defaultHeight = std::max(1.0, 10.0 * step);
     double low = m_planeY, high = m_planeY + defaultHeight;
     if (!extent.empty) {
         const double top = extent.max.y, bottom = extent.min.y;

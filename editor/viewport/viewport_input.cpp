@@ -267,7 +267,7 @@ void Viewport::focusOutEvent(QFocusEvent* event)
 
 void Viewport::flyStep()
 {
-    const double seconds = std::min(m_flyClock.restart() / 1000.0, 0.1);
+    const double seconds = std::min(double(m_flyClock.restart()) / 1000.0, 0.1);
     if (m_flyKeys.isEmpty())
         return;
     // Cross a room-sized scene in about two seconds; Shift is four times faster.

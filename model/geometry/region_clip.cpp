@@ -140,9 +140,9 @@ std::optional<std::pair<int, double>> separatingPlane(const std::vector<Box3>& b
 // falls apart into one piece per region cell it reaches, then cuts away what
 // sticks out of the cell's box (that lies outside every region).
 struct Clipper {
-    Clipper(Scene& scene, const std::vector<Box3>& boxes, const std::string& partId, CutCaps capping,
-            RegionClip& record)
-        : scene(scene), boxes(boxes), partId(partId), capping(capping), record(record)
+    Clipper(Scene& sceneToCut, const std::vector<Box3>& regionBoxes, const std::string& clippedPartId,
+            CutCaps cutCaps, RegionClip& clipRecord)
+        : scene(sceneToCut), boxes(regionBoxes), partId(clippedPartId), capping(cutCaps), record(clipRecord)
     {
     }
 

@@ -156,7 +156,8 @@ void WingedEdgeMesh::buildEdges(std::span<const std::vector<int>> loops)
                     break;
                 }
             }
-            auto faces = facesOfEdge(int(e));
+            // The faces of edge e as facesOfEdge gives them: its row of uses.
+            const auto faces = std::span<const int>(m_edgeUseFace).subspan(size_t(begin), size_t(count));
             m_problems.push_back({TopologyProblem::Kind::NonManifoldEdge, faces[2], -1, int(e),
                                   std::vector<int>(faces.begin(), faces.end())});
         }
@@ -479,7 +480,7 @@ WingedEdgeMesh::WindingRepair WingedEdgeMesh::windingRepair() const
         }
         size_t against = 0;
         for (int f : piece)
-            against += sign[size_t(f)] < 0 ? 1 : 0;
+            against += sign[size_t(f)] < 0 ? 1u : 0u;
         // Flip the minority; on a tie keep the side of the piece's first face.
         const signed char flip = against * 2 <= piece.size() ? -1 : 1;
         for (int f : piece)

@@ -48,6 +48,8 @@ void AdaptiveMesh::removeEdges(int element)
     const auto& v = m_scene.elements[size_t(element)].vertices;
     for (int k = 0; k < 3; ++k) {
         auto it = t.sides.find(key(v[size_t(k)], v[size_t((k + 1) % 3)]));
+        if (it == t.sides.end())
+            throw std::logic_error("AdaptiveMesh::removeEdges: a side of the element is not in the mesh");
         std::erase(it->second, element);
         if (it->second.empty())
             t.sides.erase(it);

@@ -15,8 +15,8 @@ Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Vi
     , m_buffer(m_visibility.makeBuffer())
 {
     const size_t elements = scene.elements.size();
-    m_radiosity.resize(elements);
-    m_unshot.resize(elements);
+    m_radiosity.assign(elements, Rgb{0.0});
+    m_unshot.assign(elements, Rgb{0.0});
     m_patchPower.assign(scene.patches.size(), Rgb{0.0});
     Rgb reflectanceArea{0.0};
     for (size_t e = 0; e < elements; ++e) {

@@ -240,8 +240,8 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
     if (area2 == 0)
         return false;
     for (int j = m_rowBegin; j < m_rowEnd; ++j) {
-        m_left[j] = std::numeric_limits<std::int32_t>::min();
-        m_right[j] = std::numeric_limits<std::int32_t>::max();
+        m_left[static_cast<size_t>(j)] = std::numeric_limits<std::int32_t>::min();
+        m_right[static_cast<size_t>(j)] = std::numeric_limits<std::int32_t>::max();
     }
 
     // Each non-horizontal edge bounds the rows it spans, from the left or the

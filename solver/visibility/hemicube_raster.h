@@ -178,8 +178,9 @@ private:
     void emitSpans(HemicubeFace face, SpanOp& op)
     {
         for (int row = m_rowBegin; row < m_rowEnd; ++row) {
-            const int x0 = m_left[row] < 0 ? 0 : static_cast<int>(m_left[row]);
-            const int x1 = m_right[row] > m_n ? m_n : static_cast<int>(m_right[row]);
+            const auto r = static_cast<size_t>(row);
+            const int x0 = m_left[r] < 0 ? 0 : static_cast<int>(m_left[r]);
+            const int x1 = m_right[r] > m_n ? m_n : static_cast<int>(m_right[r]);
             if (x0 < x1)
                 op(face, row, x0, x1);
         }
