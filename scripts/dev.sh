@@ -42,7 +42,8 @@ install_missing() {
 
 configure_and_build() {
   if [ ! -f "$build/build.ninja" ]; then
-    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    # The dev preset (CMakePresets.json): everything, warnings are errors.
+    (cd "$root" && cmake --preset dev -B "$build")
   fi
   cmake --build "$build"
 }

@@ -3,6 +3,7 @@
 // fault this way; positions in the model equal positions in the file, so the
 // same pointer serves the reader, validation, the edit functions, the solver,
 // the command line and the editor.
+#include <concepts>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -13,11 +14,32 @@ namespace regio::model {
 std::string appendPointer(const std::string& pointer, std::string_view token);
 std::string appendPointer(const std::string& pointer, std::size_t index);
 
-// The elements of a scene file, by index.
-std::string materialPointer(std::size_t material);
-std::string objectPointer(std::size_t object);
-std::string partPointer(std::size_t object, std::size_t part);
-std::string facePointer(std::size_t object, std::size_t part, std::size_t face);
-std::string regionPointer(std::size_t region);
+// The elements of a scene file, by index (size_t or int: the edit functions
+// count in int; an index is never negative).
+template <std::integral I>
+std::string materialPointer(I material)
+{
+    return appendPointer("/materials", static_cast<std::size_t>(material));
+}
+template <std::integral I>
+std::string objectPointer(I object)
+{
+    return appendPointer("/objects", static_cast<std::size_t>(object));
+}
+template <std::integral I, std::integral J>
+std::string partPointer(I object, J part)
+{
+    return appendPointer(objectPointer(object) + "/parts", static_cast<std::size_t>(part));
+}
+template <std::integral I, std::integral J, std::integral K>
+std::string facePointer(I object, J part, K face)
+{
+    return appendPointer(partPointer(object, part) + "/faces", static_cast<std::size_t>(face));
+}
+template <std::integral I>
+std::string regionPointer(I region)
+{
+    return appendPointer("/regions", static_cast<std::size_t>(region));
+}
 
 } // namespace regio::model
