@@ -2,7 +2,7 @@
 // through the solver's own result: one emitter, a receiver of reflectance
 // rho, no other reflection: B_receiver = rho * E * F * A_emitter / A_receiver.
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 

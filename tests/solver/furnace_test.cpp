@@ -2,7 +2,7 @@
 // reflectance rho and emission E reaches B = E / (1 - rho) everywhere,
 // whatever the mesh, once the shooting has converged.
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 

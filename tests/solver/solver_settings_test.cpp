@@ -1,7 +1,7 @@
 // The solver runs with the scene's own settings unless the caller overrides
 // them (regio-solve flags, the editor's dry run).
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 
