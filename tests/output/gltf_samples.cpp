@@ -1,8 +1,6 @@
-// Writes the glTF files the gltf_validator test checks with the Khronos
-// validator: every shape of output the exporter produces (separate and
-// binary containers, 16- and 32-bit indices, an empty solution, a file name
-// that needs URI escaping, tone-mapped and false colours) including a solved
-// Cornell box. Usage: gltf_samples OUTPUT_FOLDER
+// The glTF samples for the Khronos validator (gltf_samples.h).
+#include "gltf_samples.h"
+
 #include "output/export.h"
 #include "output/export_gltf.h"
 #include "support/sample_scenes.h"
@@ -52,17 +50,14 @@ std::optional<LitMesh> solvedCornellBox()
 
 } // namespace
 
-int main(int argc, char** argv)
+namespace regio::test {
+
+bool writeGltfSamples(const std::filesystem::path& folder)
 {
-    if (argc != 2) {
-        std::cerr << "usage: gltf_samples OUTPUT_FOLDER\n";
-        return 2;
-    }
-    const std::filesystem::path folder(argv[1]);
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
 
-    const LitMesh room = test::sampleRoom();
+    const LitMesh room = sampleRoom();
     DisplaySettings falseColour;
     falseColour.colours = ColourMode::FalseColour;
     DisplaySettings srgbBright;
@@ -77,8 +72,9 @@ int main(int argc, char** argv)
     const auto cornell = solvedCornellBox();
     ok = ok && cornell && write(folder / "cornell.gltf", *cornell) && write(folder / "cornell.glb", *cornell)
          && write(folder / "cornell-false-colour.glb", *cornell, falseColour);
-    if (!ok)
-        return 1;
-    std::cout << "glTF samples written to " << folder.string() << "\n";
-    return 0;
+    if (ok)
+        std::cout << "glTF samples written to " << folder.string() << "\n";
+    return ok;
 }
+
+} // namespace regio::test

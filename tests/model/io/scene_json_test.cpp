@@ -270,6 +270,8 @@ TEST_P(BrokenFileTest, IsRejectedWhereTheTableSays)
                        << describe(read.diagnostics);
 }
 
+namespace {
+
 // Files whose flaw is semantic (stage "validation") read fine here; the CLI
 // test checks them through validateScene.
 std::vector<regio::test::BrokenFile> formatBrokenFiles()
@@ -280,6 +282,8 @@ std::vector<regio::test::BrokenFile> formatBrokenFiles()
             files.push_back(file);
     return files;
 }
+
+} // namespace
 
 INSTANTIATE_TEST_SUITE_P(TestData, BrokenFileTest, testing::ValuesIn(formatBrokenFiles()),
                          [](const testing::TestParamInfo<regio::test::BrokenFile>& info) {

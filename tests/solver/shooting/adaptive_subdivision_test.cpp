@@ -402,6 +402,8 @@ TEST(AdaptiveSubdivision, FacesListTheirActiveLeavesAndParentsBecomeInactive)
     }
 }
 
+namespace {
+
 struct GrownScene {
     std::string name;
     PreparedScene scene;
@@ -447,6 +449,8 @@ std::vector<GrownScene> grownSamples(bool anchoring, std::vector<AdaptiveMesh>* 
     }
     return out;
 }
+
+} // namespace
 
 TEST(AdaptiveSubdivision, RefiningSampleScenesKeepsEveryFaceConformingAndGraded)
 {
