@@ -3,6 +3,7 @@
 #include "editor/app/autosave.h"
 #include "editor/document/commands/object_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QFile>
 #include <QProcess>
@@ -165,5 +166,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(AutosaveTest)
+REGIO_QTEST_MAIN(AutosaveTest)
 #include "autosave_test.moc"

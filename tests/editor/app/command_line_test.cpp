@@ -1,6 +1,8 @@
 // regio [SCENE.json] [--screenshot FILE.png] [--size WxH]
 #include "editor/app/command_line.h"
 
+#include "support/qt_test_registry.h"
+
 #include <QCoreApplication>
 #include <QTest>
 
@@ -62,5 +64,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(CommandLineTest)
+REGIO_QTEST_GUILESS_MAIN(CommandLineTest)
 #include "command_line_test.moc"

@@ -3,6 +3,7 @@
 #include "editor/app/main_window.h"
 #include "editor/app/recent_files.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QFile>
@@ -150,5 +151,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(MainWindowTest)
+REGIO_QTEST_MAIN(MainWindowTest)
 #include "main_window_test.moc"

@@ -2,6 +2,7 @@
 #include "editor/app/main_window.h"
 #include "editor/app/translations.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QDir>
 #include <QXmlStreamReader>
@@ -107,5 +108,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TranslationsTest)
+REGIO_QTEST_MAIN(TranslationsTest)
 #include "translations_test.moc"

@@ -16,6 +16,7 @@
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/furnished_room.h"
+#include "support/qt_test_registry.h"
 
 #include <QAbstractItemModel>
 #include <QComboBox>
@@ -506,5 +507,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(BspOrderTest)
+REGIO_QTEST_MAIN(BspOrderTest)
 #include "bsp_order_test.moc"

@@ -14,6 +14,7 @@
 #include "solver/solver.h"
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
+#include "support/qt_test_registry.h"
 
 #include <QColor>
 #include <QImage>
@@ -168,5 +169,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(BspPickGlTest)
+REGIO_QTEST_MAIN(BspPickGlTest)
 #include "bsp_pick_gl_test.moc"

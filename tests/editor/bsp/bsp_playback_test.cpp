@@ -14,6 +14,7 @@
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/furnished_room.h"
+#include "support/qt_test_registry.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -196,5 +197,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(BspPlaybackTest)
+REGIO_QTEST_MAIN(BspPlaybackTest)
 #include "bsp_playback_test.moc"

@@ -11,6 +11,7 @@
 #include "editor/document/commands/part_commands.h"
 #include "editor/document/commands/region_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QDoubleSpinBox>
 #include <QItemSelectionModel>
@@ -251,5 +252,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(DocksTest)
+REGIO_QTEST_MAIN(DocksTest)
 #include "docks_test.moc"

@@ -4,6 +4,7 @@
 #include "editor/document/commands/part_commands.h"
 #include "editor/document/scene_document.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -274,5 +275,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(SceneDocumentTest)
+REGIO_QTEST_MAIN(SceneDocumentTest)
 #include "scene_document_test.moc"

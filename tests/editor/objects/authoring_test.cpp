@@ -7,6 +7,7 @@
 #include "editor/viewport/viewport.h"
 #include "model/validation/validation.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -285,5 +286,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(AuthoringTest)
+REGIO_QTEST_MAIN(AuthoringTest)
 #include "authoring_test.moc"

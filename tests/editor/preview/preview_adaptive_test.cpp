@@ -13,6 +13,7 @@
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/preview_waits.h"
+#include "support/qt_test_registry.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -320,5 +321,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(PreviewAdaptiveTest)
+REGIO_QTEST_MAIN(PreviewAdaptiveTest)
 #include "preview_adaptive_test.moc"

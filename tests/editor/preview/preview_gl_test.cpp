@@ -15,6 +15,7 @@
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/preview_waits.h"
+#include "support/qt_test_registry.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -261,12 +262,20 @@ private slots:
     }
 };
 
-int main(int argc, char* argv[])
+namespace {
+
+// Its own main rather than the set-up of QTEST_MAIN: the default surface format
+// has to be set before the application exists.
+int runPreviewGlTest(int argc, char* argv[])
 {
     QSurfaceFormat::setDefaultFormat(Viewport::requestedFormat());
     QApplication app(argc, argv);
     PreviewGlTest test;
     return QTest::qExec(&test, argc, argv);
 }
+
+} // namespace
+
+REGIO_QTEST_OWN_MAIN(PreviewGlTest, runPreviewGlTest)
 
 #include "preview_gl_test.moc"

@@ -16,6 +16,7 @@
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/preview_waits.h"
+#include "support/qt_test_registry.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -479,5 +480,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(PreviewRunnerTest)
+REGIO_QTEST_MAIN(PreviewRunnerTest)
 #include "preview_runner_test.moc"

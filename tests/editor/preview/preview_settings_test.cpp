@@ -8,6 +8,7 @@
 #include "editor/document/scene_document.h"
 #include "solver/prepare/prepare.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -210,5 +211,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(PreviewSettingsTest)
+REGIO_QTEST_MAIN(PreviewSettingsTest)
 #include "preview_settings_test.moc"

@@ -14,6 +14,7 @@
 #include "model/geometry/region_clip.h"
 #include "solver/authoring/region_proposal.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QLabel>
@@ -272,5 +273,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(RegionsCommandsTest)
+REGIO_QTEST_MAIN(RegionsCommandsTest)
 #include "regions_commands_test.moc"

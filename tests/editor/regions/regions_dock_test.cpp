@@ -18,6 +18,7 @@
 #include "support/command_run.h"
 #include "support/editor_documents.h"
 #include "support/furnished_room.h"
+#include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QElapsedTimer>
@@ -371,5 +372,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(RegionsDockTest)
+REGIO_QTEST_MAIN(RegionsDockTest)
 #include "regions_dock_test.moc"

@@ -9,6 +9,7 @@
 #include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QMainWindow>
@@ -194,5 +195,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(RegionsToolGlTest)
+REGIO_QTEST_MAIN(RegionsToolGlTest)
 #include "regions_tool_gl_test.moc"

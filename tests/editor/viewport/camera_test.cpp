@@ -4,6 +4,7 @@
 #include "editor/viewport/picking.h"
 #include "editor/viewport/transform_gizmo.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <glm/geometric.hpp>
 
@@ -200,5 +201,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(CameraTest)
+REGIO_QTEST_MAIN(CameraTest)
 #include "camera_test.moc"

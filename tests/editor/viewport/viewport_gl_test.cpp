@@ -8,6 +8,7 @@
 #include "editor/viewport/viewport.h"
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
+#include "support/qt_test_registry.h"
 
 #include <QApplication>
 #include <QImage>
@@ -305,7 +306,11 @@ private slots:
     }
 };
 
-int main(int argc, char* argv[])
+namespace {
+
+// Its own main rather than the set-up of QTEST_MAIN: the default surface format
+// has to be set before the application exists.
+int runViewportGlTest(int argc, char* argv[])
 {
     // As in the application: the 3.3 core format before the application exists.
     QSurfaceFormat::setDefaultFormat(Viewport::requestedFormat());
@@ -313,5 +318,9 @@ int main(int argc, char* argv[])
     ViewportGlTest test;
     return QTest::qExec(&test, argc, argv);
 }
+
+} // namespace
+
+REGIO_QTEST_OWN_MAIN(ViewportGlTest, runViewportGlTest)
 
 #include "viewport_gl_test.moc"

@@ -1,6 +1,7 @@
 // Undo commands on materials.
 #include "editor/document/commands/material_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QSignalSpy>
 
@@ -126,5 +127,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(MaterialCommandsTest)
+REGIO_QTEST_MAIN(MaterialCommandsTest)
 #include "material_commands_test.moc"

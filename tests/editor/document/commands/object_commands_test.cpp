@@ -1,6 +1,7 @@
 // Undo commands on objects: every one does, undoes and redoes exactly.
 #include "editor/document/commands/object_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QSignalSpy>
 
@@ -194,5 +195,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(ObjectCommandsTest)
+REGIO_QTEST_MAIN(ObjectCommandsTest)
 #include "object_commands_test.moc"

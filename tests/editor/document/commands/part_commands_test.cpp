@@ -2,6 +2,7 @@
 #include "editor/document/commands/part_commands.h"
 #include "model/validation/validation.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -210,5 +211,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(PartCommandsTest)
+REGIO_QTEST_MAIN(PartCommandsTest)
 #include "part_commands_test.moc"

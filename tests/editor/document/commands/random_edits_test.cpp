@@ -8,6 +8,7 @@
 #include "editor/document/commands/region_commands.h"
 #include "editor/document/commands/solver_settings_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -243,5 +244,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(RandomEditsTest)
+REGIO_QTEST_MAIN(RandomEditsTest)
 #include "random_edits_test.moc"

@@ -2,6 +2,7 @@
 #include "editor/document/commands/bsp_order_commands.h"
 #include "editor/document/commands/region_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QSignalSpy>
 
@@ -124,5 +125,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(RegionCommandsTest)
+REGIO_QTEST_MAIN(RegionCommandsTest)
 #include "region_commands_test.moc"

@@ -1,6 +1,7 @@
 // Undo commands on the solver settings and the stored camera.
 #include "editor/document/commands/solver_settings_commands.h"
 #include "support/editor_documents.h"
+#include "support/qt_test_registry.h"
 
 #include <QSignalSpy>
 
@@ -71,5 +72,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(SolverSettingsCommandsTest)
+REGIO_QTEST_MAIN(SolverSettingsCommandsTest)
 #include "solver_settings_commands_test.moc"
