@@ -1,9 +1,12 @@
 #pragma once
 // Main windows and editor processes for the editor tests.
 #include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
+#include "model/scene.h"
 
 #include <QProcess>
+#include <QSize>
 #include <QStringList>
 #include <QTest>
 
@@ -30,6 +33,16 @@ inline void showAndWaitForFrame(editor::MainWindow& window)
         qFatal("the window was never exposed");
     if (!QTest::qWaitFor([&] { return window.viewport()->hasRenderedFrame(); }, 20000))
         qFatal("the viewport never rendered a frame");
+}
+
+// A quiet window holding `scene` at `size`, shown, its viewport drawn.
+inline std::unique_ptr<editor::MainWindow> showWindow(const model::Scene& scene, QSize size = {900, 650})
+{
+    auto window = quietWindow();
+    window->resize(size);
+    window->document()->reset(scene);
+    showAndWaitForFrame(*window);
+    return window;
 }
 
 struct EditorRun {

@@ -1,6 +1,7 @@
-// The radiosity preview's runner and controller (issue 7) without a GL
-// context: equality with regio-solve, stop/pause/reset, the UI thread's
-// responsiveness while solving, the inspector, the hemicube view, exports.
+// The radiosity preview's runner and controller without a GL context:
+// equality with regio-solve, stop/pause/reset, the layers the viewport gets
+// while solving, the inspector, the hemicube view, exports. How fast they
+// answer while solving: preview_runner_timing_test.cpp.
 #include "editor/document/commands/solver_settings_commands.h"
 #include "editor/app/main_window.h"
 #include "editor/preview/convergence_plot.h"
@@ -12,13 +13,13 @@
 #include "editor/preview/solver_presets.h"
 #include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
+#include "preview_scenes.h"
 #include "support/command_run.h"
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/preview_waits.h"
 #include "support/qt_test_registry.h"
 
-#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -39,6 +40,7 @@ namespace {
 
 std::unique_ptr<MainWindow> makeWindow() { return test::quietWindow(); }
 
+using test::longSample;
 using test::waitForFinal;
 using test::waitForState;
 
@@ -47,21 +49,6 @@ model::Scene draftSample(const char* name)
 {
     model::Scene scene = test::loadSample(name);
     scene.solver = applyPreset(scene.solver, SolverPreset::Draft);
-    return scene;
-}
-
-// A solve that runs for a while: normal settings and no convergence stop.
-// Adaptive subdivision as the sample has it: the mesh grows from 14k to 55k
-// elements in 8 rounds of 0.13 to 0.25 s while these tests run (a round
-// stops at its next slice when cancelled: Stop inside rounds is tested in
-// preview_adaptive_test.cpp).
-model::Scene longSample(bool adaptive = true)
-{
-    model::Scene scene = test::loadSample("two-lights-room");
-    scene.solver.maxIterations = 100000;
-    scene.solver.convergence = 1e-9;
-    scene.solver.patchSize = 0.3;
-    scene.solver.adaptive.enabled = adaptive;
     return scene;
 }
 
@@ -153,19 +140,14 @@ private slots:
         QVERIFY(compared > 30);
     }
 
-    void stopIsHonouredWithin100MsAndKeepsTheSolution()
+    void stopFinishesTheSolveAndKeepsTheSolution()
     {
         PreviewRunner runner;
         runner.start(longSample());
         QVERIFY(waitForState(runner, PreviewState::Running));
         QTRY_VERIFY_WITH_TIMEOUT(runner.frame() && runner.frame()->snapshot.stats.iterations > 5, 60000);
-        QElapsedTimer clock;
-        clock.start();
         runner.stop();
         QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
-        const qint64 ms = clock.elapsed();
-        qInfo("stop honoured after %lld ms", ms);
-        QVERIFY2(ms <= 100, qPrintable(QStringLiteral("stop took %1 ms").arg(ms)));
         QTRY_VERIFY(runner.frame() && !runner.frame()->running);
         const int iterations = runner.frame()->snapshot.stats.iterations;
         QTest::qWait(200);
@@ -190,37 +172,6 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(runner.frame()->snapshot.stats.iterations > paused, 20000);
         runner.stop();
         QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
-    }
-
-    void frameArriveAtLeastEvery250MsWhileSolving()
-    {
-        PreviewRunner runner;
-        QElapsedTimer clock;
-        qint64 last = -1, longest = 0;
-        int frames = 0;
-        connect(&runner, &PreviewRunner::frameReady, this, [&] {
-            if (runner.state() != PreviewState::Running)
-                return;
-            const qint64 now = clock.elapsed();
-            if (last >= 0)
-                longest = std::max(longest, now - last);
-            last = now;
-            ++frames;
-        });
-        clock.start();
-        // The preview's own frame spacing: without refinement rounds, which
-        // report no progress. A frame goes out right before a round may run,
-        // so with them the longest gap is one round and a shot (182 to 275 ms
-        // measured on this scene on a loaded machine).
-        runner.start(longSample(false));
-        QVERIFY(waitForState(runner, PreviewState::Running));
-        QTest::qWait(2000);
-        runner.stop();
-        QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
-        qInfo("%d frames in 2 s, longest gap %lld ms; %d elements, last frame built in %.0f ms", frames, longest,
-              runner.frame()->snapshot.stats.elements, 1000.0 * runner.frame()->buildSeconds);
-        QVERIFY(frames >= 6);
-        QVERIFY2(longest <= 250, qPrintable(QStringLiteral("longest gap between frames %1 ms").arg(longest)));
     }
 
     void resetDropsTheSolutionAndEveryWorker()
@@ -250,7 +201,7 @@ private slots:
         QVERIFY(!failed.first().first().toString().isEmpty());
     }
 
-    void theUiThreadIsNeverBlockedMoreThan50MsWhileSolving()
+    void theViewportGetsTheSolutionAndMeshLayersWhileSolving()
     {
         auto window = makeWindow();
         window->resize(800, 600);
@@ -259,24 +210,15 @@ private slots:
         PreviewDisplay display;
         display.showMesh = true; // the heaviest layers
         preview->setDisplay(display);
-        test::UiGapMeter gaps;
-        int layers = 0;
-        connect(preview, &PreviewController::layersApplied, this, [&] { ++layers; });
         preview->run();
         QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
-        gaps.start();
         QTest::qWait(3000);
         preview->runner()->stop();
         QVERIFY(waitForState(*preview->runner(), PreviewState::Finished, 5000));
         QTest::qWait(100);
-        gaps.stop();
-        const qint64 longest = gaps.longestMs();
-        qInfo("longest UI gap %lld ms over 3 s of solving, %d layer updates", longest, layers);
-        QVERIFY(layers >= 6);
         QVERIFY(window->viewport()->hasLayer(QString::fromLatin1(kSolutionLayer)));
         QVERIFY(window->viewport()->layer(QString::fromLatin1(kSolutionLayer))->replacesSurfaces);
         QVERIFY(window->viewport()->hasLayer(QString::fromLatin1(kMeshLayer)));
-        QVERIFY2(longest <= 50, qPrintable(QStringLiteral("the UI thread stalled %1 ms").arg(longest)));
     }
 
     void theStatusBarShowsIterationUnshotElementsAndTime()
