@@ -1,4 +1,4 @@
-// The solver dock's settings (issue 7, point 1): every control edits through
+// The solver dock's settings: every control edits through
 // SetSolverSettings (undoable, saved in the file), presets, the dry run, and
 // the --preview-iterations option.
 #include "editor/app/command_line.h"
