@@ -68,7 +68,7 @@ case "$command" in
     configure_and_build
     # The glTF validator (npm package gltf-validator) at the versions the
     # committed lockfile pins.
-    gltf="$root/tests/solver/gltf"
+    gltf="$root/tests/output/gltf"
     [ -d "$gltf/node_modules/gltf-validator" ] || npm ci --prefix "$gltf" --no-audit --no-fund
     exec ctest --test-dir "$build" --output-on-failure -j2 "$@"
     ;;

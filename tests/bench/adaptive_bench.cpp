@@ -24,6 +24,7 @@
 #include "solver/prepare/prepare.h"
 #include "solver/shooting/shooting.h"
 #include "solver/solver.h"
+#include "support/sample_scenes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -50,7 +51,7 @@ double secondsSince(Clock::time_point start)
 const model::Scene& scene()
 {
     static const model::Scene s = [] {
-        const std::string path = std::string(REGIO_SOURCE_DIR) + "/resources/scenes/two-lights-room.json";
+        const std::string path = regio::test::samplePath("two-lights-room").string();
         model::Result<model::Scene> read = model::loadSceneFile(path);
         if (!read.ok() || model::hasErrors(model::validateScene(*read))) {
             std::fprintf(stderr, "cannot use %s\n", path.c_str());

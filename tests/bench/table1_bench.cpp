@@ -13,6 +13,7 @@
 #include "model/validation/validation.h"
 #include "solver/prepare/prepare.h"
 #include "solver/solver.h"
+#include "support/sample_scenes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -56,7 +57,7 @@ const Setup& setup()
 {
     static const Setup s = [] {
         Setup s;
-        const std::string path = std::string(REGIO_SOURCE_DIR) + "/resources/scenes/two-lights-room.json";
+        const std::string path = regio::test::samplePath("two-lights-room").string();
         model::Result<model::Scene> read = model::loadSceneFile(path);
         if (!read.ok() || model::hasErrors(model::validateScene(*read))) {
             std::fprintf(stderr, "cannot use %s\n", path.c_str());

@@ -1,8 +1,9 @@
 // `regio-solve` as a user and a script see it: the real executable, its
 // output and its exit status, on the sample scenes, on every broken file of
 // the test data and on hostile input.
-#include "broken_file_table.h"
-#include "command_run.h"
+#include "support/broken_file_table.h"
+#include "support/command_run.h"
+#include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
-using namespace regio::cli_test;
+using namespace regio::test;
 
 namespace {
 
@@ -52,7 +53,6 @@ std::vector<fs::path> jsonFilesIn(const fs::path& dir)
 }
 
 const fs::path kDataDir = REGIO_TEST_DATA;
-const fs::path kScenesDir = fs::path(REGIO_SOURCE_DIR) / "resources" / "scenes";
 
 const char* const kValidScene = R"({ "format": "regio-scene", "version": 1,
   "materials": [ { "id": "lamp", "reflectance": [0.5, 0.5, 0.5], "emission": [10, 10, 10] } ],
@@ -122,8 +122,8 @@ TEST(RegioSolveCheck, NoFileOrAnUnknownOptionIsAUsageError)
 
 TEST(RegioSolveCheck, EverySampleSceneIsAccepted)
 {
-    const std::vector<fs::path> scenes = jsonFilesIn(kScenesDir);
-    ASSERT_FALSE(scenes.empty()) << "no sample scenes in " << kScenesDir;
+    const std::vector<fs::path> scenes = sampleFiles();
+    ASSERT_FALSE(scenes.empty()) << "no sample scenes in " << samplesFolder();
     for (const fs::path& scene : scenes) {
         const CommandRun run = runRegioSolve({"check", scene.string()});
         EXPECT_EQ(run.exitCode, 0) << scene << "\n" << run.out << run.err;

@@ -1,7 +1,8 @@
 // `regio-solve solve --adaptive/--threshold/--min-edge/--anchoring`: the
 // command-line overrides of the scene's adaptive subdivision settings (§5.7),
 // as the report and the mesh it describes show them.
-#include "command_run.h"
+#include "support/command_run.h"
+#include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +13,12 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using namespace regio::cli_test;
+using namespace regio::test;
 using nlohmann::json;
 
 namespace {
 
-const fs::path kTwoLights = fs::path(REGIO_SOURCE_DIR) / "resources" / "scenes" / "two-lights-room.json";
+const fs::path kTwoLights = samplePath("two-lights-room");
 
 // A lamp above a grey floor; the file's adaptive settings differ from every
 // value the tests pass, so an override that does not arrive shows.
@@ -184,7 +185,7 @@ TEST(SolveAdaptiveOptions, TuningASubdivisionThatIsOffIsSolvedWithAWarning)
     EXPECT_NE(run.err.find("--adaptive on turns it on"), std::string::npos) << run.err;
 
     const CommandRun off = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--adaptive", "off", "--anchoring",
-                                          "off", (kTwoLights).string()});
+                                          "off", kTwoLights.string()});
     ASSERT_EQ(off.exitCode, 0) << off.err;
     EXPECT_NE(off.err.find("warning: --anchoring has no effect"), std::string::npos) << off.err;
     EXPECT_EQ(off.err.find("turns it on"), std::string::npos) << off.err;

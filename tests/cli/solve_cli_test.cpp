@@ -1,6 +1,7 @@
 // `regio-solve solve` as a user and a script see it: the real executable, its
 // options, its JSON report, its progress line and its exit status.
-#include "command_run.h"
+#include "support/command_run.h"
+#include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
-using namespace regio::cli_test;
+using namespace regio::test;
 using nlohmann::json;
 
 namespace {
@@ -36,7 +37,6 @@ CommandRun solve(const std::vector<std::string>& args)
     return runRegioSolve(all);
 }
 
-const fs::path kScenes = fs::path(REGIO_SOURCE_DIR) / "resources" / "scenes";
 const fs::path kData = REGIO_TEST_DATA;
 
 // Two facing panels: a lamp and a grey receiver, 8 triangles in all.
@@ -76,7 +76,7 @@ void expectRgb(const json& value)
 TEST(SolveCommand, SolvesASampleSceneAndWritesAReportWithEveryRequiredField)
 {
     Scratch scratch;
-    const fs::path scene = kScenes / "two-lights-room.json";
+    const fs::path scene = samplePath("two-lights-room");
     const CommandRun run = solve({"--iterations", "5", "--hemicube", "60", "--report", (scratch / "r.json").string(),
                                   scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -132,7 +132,7 @@ TEST(SolveCommand, EnergyInTheReportBalancesPerChannel)
 TEST(SolveCommand, OptionsOverrideTheScenesSettingsAndShowInTheReport)
 {
     Scratch scratch;
-    const fs::path scene = kScenes / "two-lights-room.json";
+    const fs::path scene = samplePath("two-lights-room");
     const CommandRun run = solve({"--iterations=2", "--hemicube=41", "--visibility", "zbuffer", "--regions", "none",
                                   "--quiet", "--report", (scratch / "r.json").string(), scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -168,7 +168,7 @@ TEST(SolveCommand, IterationsMeansExactlyThatManyShotsWhateverTheScenesConvergen
 TEST(SolveCommand, ConvergenceStopsTheSolveEarly)
 {
     Scratch scratch;
-    const fs::path scene = kScenes / "two-lights-room.json";
+    const fs::path scene = samplePath("two-lights-room");
     const CommandRun run = solve({"--hemicube", "40", "--convergence", "0.5", "--report",
                                   (scratch / "r.json").string(), scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -183,13 +183,13 @@ TEST(SolveCommand, SeveralScenesGiveAnArrayOfReports)
     Scratch scratch;
     const fs::path small = scratch.write("small.json", kSmallScene);
     const CommandRun run = solve({"--iterations", "2", "--quiet", "--report", (scratch / "r.json").string(),
-                                  small.string(), (kScenes / "cornell-box.json").string()});
+                                  small.string(), samplePath("cornell-box").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const json r = json::parse(readText(scratch / "r.json"));
     ASSERT_TRUE(r.is_array());
     ASSERT_EQ(r.size(), 2u);
     EXPECT_EQ(r[0]["scene"], small.string());
-    EXPECT_EQ(r[1]["scene"], (kScenes / "cornell-box.json").string());
+    EXPECT_EQ(r[1]["scene"], samplePath("cornell-box").string());
 }
 
 TEST(SolveCommand, ReportDashWritesTheJsonToStandardOutput)
@@ -252,7 +252,7 @@ TEST(SolveCommand, AMixOfGoodAndBadScenesSolvesTheGoodOnesAndReportsTheWorstExit
 
 TEST(SolveCommand, BadOptionsAreUsageErrorsThatExitTwo)
 {
-    const std::string scene = (kScenes / "cornell-box.json").string();
+    const std::string scene = samplePath("cornell-box").string();
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"--hemicube", "1", scene},
              {"--hemicube", "abc", scene},
@@ -282,7 +282,7 @@ TEST(SolveCommand, HelpDescribesEveryOption)
 TEST(SolveCommand, InterruptStopsTheSolveAndStillWritesTheReport)
 {
     Scratch scratch;
-    const fs::path scene = kScenes / "two-lights-room.json";
+    const fs::path scene = samplePath("two-lights-room");
     const std::string command = quoted(REGIO_SOLVE_EXE) + " solve --quiet --iterations 1000000 --hemicube 600 --report " +
                                 quoted((scratch / "r.json").string()) + " " + quoted(scene.string()) +
                                 " </dev/null >/dev/null 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo $? > " +
@@ -385,7 +385,7 @@ TEST(SolveCommand, TheGuideDocumentsEveryFieldOfTheReport)
 
     Scratch scratch;
     const CommandRun run = solve({"--iterations", "2", "--hemicube", "40", "--quiet", "--report",
-                                  (scratch / "r.json").string(), (kScenes / "two-lights-room.json").string()});
+                                  (scratch / "r.json").string(), samplePath("two-lights-room").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const json r = json::parse(readText(scratch / "r.json"));
     for (const auto& [key, value] : r.items()) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The layering rules of docs/architecture.md, checked on every source file.
+"""The layering rules of the source tree, checked on every source file.
 
 Each folder may include the project headers of the folders listed for it and
 nothing else; no Qt header appears outside editor/. The build enforces the

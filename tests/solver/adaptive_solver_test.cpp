@@ -2,9 +2,8 @@
 // shots where the gradient is, the energy books stay exact, snapshots stay
 // consistent while the mesh changes under a running solve, and the per-face
 // answers agree with a uniformly fine mesh.
-#include "output/report.h"
 #include "solver/solver.h"
-#include "adaptive_scenes.h"
+#include "support/adaptive_scenes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -161,20 +160,6 @@ TEST(AdaptiveSolver, PerFaceMeansAgreeWithAUniformlyFineMeshWithinTwoPercent)
             EXPECT_NEAR(a[i].radiosity[c], u[i].radiosity[c], 0.02 * u[i].radiosity[c]) << a[i].id;
     }
     EXPECT_EQ(compared, 7); // floor, lamp, box top and four sides (the shadowed one too)
-}
-
-TEST(AdaptiveSolver, TheReportGivesTheFinalElementCountAndTheRounds)
-{
-    auto built = Solver::create(test::boxUnderLamp());
-    ASSERT_TRUE(built.ok());
-    const int initial = (*built)->stats().elements;
-    (*built)->step(20);
-    const nlohmann::json report = output::solveReport("box under lamp", **built);
-    EXPECT_EQ(report["elements"].get<int>(), (*built)->stats().elements);
-    EXPECT_GT(report["elements"].get<int>(), initial);
-    EXPECT_TRUE(report["adaptive"]["enabled"].get<bool>());
-    EXPECT_EQ(report["adaptive"]["rounds"].get<int>(), (*built)->stats().adaptiveRounds);
-    EXPECT_GT(report["adaptive"]["rounds"].get<int>(), 0);
 }
 
 TEST(AdaptiveSolver, OptionsOverrideTheScenesAdaptiveSettings)

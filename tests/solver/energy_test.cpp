@@ -1,7 +1,8 @@
-// Exact energy bookkeeping (DESIGN.md): emitted = absorbed + unshot + escaped,
-// per channel, after any number of shots, open or closed scene.
+// Exact energy bookkeeping, as the solver reports it: emitted = absorbed +
+// unshot + escaped (what leaves an open scene), per channel, after any number
+// of shots, open or closed scene.
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The furnace (DESIGN.md, known answers): a closed box whose every face has
+// The furnace, a known answer: a closed box whose every face has
 // reflectance rho and emission E reaches B = E / (1 - rho) everywhere,
 // whatever the mesh, once the shooting has converged.
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,8 @@
 // crack-free cuts keep to rounding, and the shooting order that may differ
 // in ties. Every face of non-zero area is compared, however small.
 #include "solver/solver.h"
-#include "solver_test_scenes.h"
+#include "support/sample_scenes.h"
+#include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -96,7 +97,7 @@ void expectAllModesAgree(const model::Scene& scene, const std::string& name, int
 
 TEST(RegionsEquivalence, TheTwoLightSampleGivesTheSameRadiosityOnEveryFaceInAllThreeRegionModes)
 {
-    const model::Scene scene = test::loadSample("two-lights-room.json");
+    const model::Scene scene = test::loadSample("two-lights-room");
     ASSERT_FALSE(scene.objects.empty());
     ASSERT_GE(scene.regions.size(), 2u);
     expectAllModesAgree(scene, "two-lights-room", static_cast<int>(scene.regions.size()));

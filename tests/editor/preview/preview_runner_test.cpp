@@ -1,0 +1,426 @@
+// The radiosity preview's runner and controller without a GL context:
+// equality with regio-solve, stop/pause/reset, the layers the viewport gets
+// while solving, the inspector, the hemicube view, exports. How fast they
+// answer while solving: preview_runner_timing_test.cpp.
+#include "editor/document/commands/solver_settings_commands.h"
+#include "editor/app/main_window.h"
+#include "editor/preview/convergence_plot.h"
+#include "editor/preview/preview_controller.h"
+#include "editor/preview/preview_display.h"
+#include "editor/preview/preview_export.h"
+#include "editor/preview/preview_inspector.h"
+#include "editor/preview/preview_runner.h"
+#include "editor/preview/solver_presets.h"
+#include "editor/document/scene_document.h"
+#include "editor/viewport/viewport.h"
+#include "preview_scenes.h"
+#include "support/command_run.h"
+#include "support/editor_documents.h"
+#include "support/editor_windows.h"
+#include "support/preview_waits.h"
+#include "support/qt_test_registry.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <memory>
+
+using namespace regio;
+using namespace regio::editor;
+
+namespace {
+
+std::unique_ptr<MainWindow> makeWindow() { return test::quietWindow(); }
+
+using test::longSample;
+using test::waitForFinal;
+using test::waitForState;
+
+// The draft preset on a sample: seconds to solve, thousands of elements.
+model::Scene draftSample(const char* name)
+{
+    model::Scene scene = test::loadSample(name);
+    scene.solver = applyPreset(scene.solver, SolverPreset::Draft);
+    return scene;
+}
+
+} // namespace
+
+class PreviewRunnerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { test::initTestEnvironment(); }
+
+    void previewAfterNStepsEqualsRegioSolveIterationsN_data()
+    {
+        QTest::addColumn<QString>("sample");
+        QTest::addColumn<int>("iterations");
+        QTest::addColumn<bool>("adaptive");
+        QTest::addColumn<bool>("anchoring");
+        QTest::newRow("cornell-box") << QStringLiteral("cornell-box") << 40 << true << true;
+        QTest::newRow("two-lights-room") << QStringLiteral("two-lights-room") << 25 << true << true;
+        QTest::newRow("cornell-box, adaptive subdivision without anchoring") << QStringLiteral("cornell-box") << 40
+                                                                             << true << false;
+        QTest::newRow("two-lights-room, adaptive subdivision without anchoring")
+            << QStringLiteral("two-lights-room") << 25 << true << false;
+        QTest::newRow("cornell-box, no adaptive subdivision") << QStringLiteral("cornell-box") << 40 << false << true;
+        QTest::newRow("two-lights-room, no adaptive subdivision") << QStringLiteral("two-lights-room") << 25
+                                                                  << false << true;
+    }
+    void previewAfterNStepsEqualsRegioSolveIterationsN()
+    {
+        QFETCH(QString, sample);
+        QFETCH(int, iterations);
+        QFETCH(bool, adaptive);
+        QFETCH(bool, anchoring);
+        test::ScratchDir scratch;
+        model::Scene scene = test::loadSample(sample.toStdString());
+        scene.solver.adaptive.enabled = adaptive; // the samples' own thresholds and minimum edges
+        scene.solver.adaptive.anchoring = anchoring;
+        // Both solve the same file.
+        const std::string path = (scratch / "scene.json").string();
+        QVERIFY(model::saveSceneFile(scene, path).ok());
+        PreviewRunner runner;
+        runner.start(scene, iterations);
+        QVERIFY(waitForFinal(runner));
+        QVERIFY(runner.frame());
+        if (runner.frame()->snapshot.stats.iterations != iterations)
+            qWarning("history %d points, stop %s, %d elements", int(runner.frame()->history.size()),
+                     solver::stopReasonName(runner.frame()->snapshot.stats.stop),
+                     runner.frame()->snapshot.stats.elements);
+        QCOMPARE(runner.frame()->snapshot.stats.iterations, iterations);
+        const std::vector<solver::FaceResult> preview = faceMeans(runner.frame()->snapshot);
+
+        const std::string report = (scratch / "report.json").string();
+        const test::CommandRun run = test::runRegioSolve(
+            {"solve", path, "--iterations", std::to_string(iterations), "--report", report, "--quiet"});
+        QVERIFY2(run.exited && run.exitCode == 0, run.err.c_str());
+        QFile file(QString::fromStdString(report));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonDocument json = QJsonDocument::fromJson(file.readAll());
+        QJsonObject entry = json.object();
+        if (entry.contains(QStringLiteral("scenes")))
+            entry = entry.value(QStringLiteral("scenes")).toArray().first().toObject();
+        QCOMPARE(entry.value(QStringLiteral("stats")).toObject().value(QStringLiteral("iterations")).toInt(iterations),
+                 iterations);
+        // With adaptive subdivision on, the row proves something only if the
+        // mesh was refined (a round runs before the shot after a light's shot).
+        const int rounds = entry.value(QStringLiteral("adaptive")).toObject().value(QStringLiteral("rounds")).toInt(-1);
+        QCOMPARE(runner.frame()->snapshot.stats.adaptiveRounds, adaptive ? rounds : 0);
+        if (adaptive)
+            QVERIFY2(rounds > 0, "regio-solve refined the mesh");
+        const QJsonArray faces = entry.value(QStringLiteral("faces")).toArray();
+        QCOMPARE(qsizetype(preview.size()), faces.size());
+        int compared = 0;
+        for (qsizetype i = 0; i < faces.size(); ++i) {
+            const QJsonObject f = faces[i].toObject();
+            QCOMPARE(f.value(QStringLiteral("id")).toString().toStdString(), preview[size_t(i)].id);
+            const QJsonArray b = f.value(QStringLiteral("radiosity")).toArray();
+            for (int c = 0; c < 3; ++c) {
+                const double expected = b[c].toDouble();
+                const double got = preview[size_t(i)].radiosity[c];
+                // 0.1 % of the value, and a floor far below anything visible for unlit faces.
+                QVERIFY2(std::abs(got - expected) <= 1e-3 * std::abs(expected) + 1e-9,
+                         qPrintable(QStringLiteral("%1 channel %2: preview %3, regio-solve %4")
+                                        .arg(f.value(QStringLiteral("id")).toString())
+                                        .arg(c)
+                                        .arg(got, 0, 'g', 10)
+                                        .arg(expected, 0, 'g', 10)));
+                ++compared;
+            }
+        }
+        QVERIFY(compared > 30);
+    }
+
+    void stopFinishesTheSolveAndKeepsTheSolution()
+    {
+        PreviewRunner runner;
+        runner.start(longSample());
+        QVERIFY(waitForState(runner, PreviewState::Running));
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame() && runner.frame()->snapshot.stats.iterations > 5, 60000);
+        runner.stop();
+        QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
+        QTRY_VERIFY(runner.frame() && !runner.frame()->running);
+        const int iterations = runner.frame()->snapshot.stats.iterations;
+        QTest::qWait(200);
+        QCOMPARE(runner.frame()->snapshot.stats.iterations, iterations); // nothing shoots any more
+        QVERIFY(!runner.frame()->snapshot.radiosity.empty());
+    }
+
+    void pauseHoldsTheSolveAndResumeContinuesIt()
+    {
+        PreviewRunner runner;
+        runner.start(longSample());
+        QVERIFY(waitForState(runner, PreviewState::Running));
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame() && runner.frame()->snapshot.stats.iterations > 2, 60000);
+        runner.pause();
+        QVERIFY(waitForState(runner, PreviewState::Paused, 5000));
+        QTRY_VERIFY(!runner.frame()->running);
+        const int paused = runner.frame()->snapshot.stats.iterations;
+        QTest::qWait(300);
+        QCOMPARE(runner.frame()->snapshot.stats.iterations, paused);
+        runner.resume();
+        QCOMPARE(runner.state(), PreviewState::Running);
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame()->snapshot.stats.iterations > paused, 20000);
+        runner.stop();
+        QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
+    }
+
+    void resetDropsTheSolutionAndEveryWorker()
+    {
+        PreviewRunner runner;
+        for (int i = 0; i < 5; ++i) {
+            runner.start(longSample());
+            QTest::qWait(20 * i);
+        }
+        QVERIFY(waitForState(runner, PreviewState::Running));
+        runner.reset();
+        QCOMPARE(runner.state(), PreviewState::Idle);
+        QVERIFY(!runner.frame());
+        QTRY_COMPARE_WITH_TIMEOUT(runner.retiredSessions(), 0, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(PreviewSession::liveSessions(), 0, 5000);
+    }
+
+    void aSceneThatCannotBePreparedFailsWithItsReason()
+    {
+        model::Scene scene = test::loadSample("cornell-box");
+        scene.objects[0].parts[0].faces[0].material = "no-such-material";
+        PreviewRunner runner;
+        QSignalSpy failed(&runner, &PreviewRunner::failed);
+        runner.start(scene);
+        QVERIFY(waitForState(runner, PreviewState::Failed, 30000));
+        QCOMPARE(failed.count(), 1);
+        QVERIFY(!failed.first().first().toString().isEmpty());
+    }
+
+    void theViewportGetsTheSolutionAndMeshLayersWhileSolving()
+    {
+        auto window = makeWindow();
+        window->resize(800, 600);
+        window->document()->reset(longSample());
+        PreviewController* preview = window->preview();
+        PreviewDisplay display;
+        display.showMesh = true; // the heaviest layers
+        preview->setDisplay(display);
+        preview->run();
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
+        QTest::qWait(3000);
+        preview->runner()->stop();
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Finished, 5000));
+        QTest::qWait(100);
+        QVERIFY(window->viewport()->hasLayer(QString::fromLatin1(kSolutionLayer)));
+        QVERIFY(window->viewport()->layer(QString::fromLatin1(kSolutionLayer))->replacesSurfaces);
+        QVERIFY(window->viewport()->hasLayer(QString::fromLatin1(kMeshLayer)));
+    }
+
+    void theStatusBarShowsIterationUnshotElementsAndTime()
+    {
+        auto window = makeWindow();
+        window->document()->reset(draftSample("cornell-box"));
+        PreviewController* preview = window->preview();
+        QCOMPARE(preview->statusText(), PreviewController::tr("Preview: not solved"));
+        preview->runIterations(10);
+        QVERIFY(waitForFinal(*preview->runner()));
+        QTRY_VERIFY(preview->layersCurrent());
+        const QString text = preview->statusText();
+        QVERIFY2(text.contains(QStringLiteral("iteration 10")), qPrintable(text));
+        QVERIFY2(text.contains(QString::number(preview->runner()->frame()->snapshot.stats.elements)), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("unshot")), qPrintable(text));
+    }
+
+    void editingMarksThePreviewStaleAndLiveResolvesAfterAPause()
+    {
+        auto window = makeWindow();
+        window->document()->reset(draftSample("cornell-box"));
+        PreviewController* preview = window->preview();
+        preview->runIterations(5);
+        QVERIFY(waitForFinal(*preview->runner()));
+        QVERIFY(!preview->runner()->isStale());
+        model::SolverSettings s = window->document()->scene().solver;
+        s.maxIterations = 20;
+        s.convergence = 1e-6; // the iteration count decides
+        QVERIFY(window->document()->push(new SetSolverSettings(window->document(), s)));
+        QVERIFY(preview->runner()->isStale());
+        QVERIFY(preview->statusText().contains(PreviewController::tr(" (stale: the scene changed)")));
+        // Not live: nothing happens by itself.
+        QTest::qWait(300);
+        QCOMPARE(preview->runner()->state(), PreviewState::Finished);
+
+        preview->setLiveDelay(150);
+        preview->setLive(true);
+        QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Finished && !preview->runner()->isStale(),
+                                 30000);
+        // A burst of edits solves once, after the burst.
+        QSignalSpy states(preview->runner(), &PreviewRunner::stateChanged);
+        for (int i = 0; i < 5; ++i) {
+            s.maxIterations = 30 + i;
+            QVERIFY(window->document()->push(new SetSolverSettings(window->document(), s)));
+            QTest::qWait(40);
+        }
+        QVERIFY(preview->runner()->isStale());
+        QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Finished && !preview->runner()->isStale() &&
+                                     !preview->runner()->frame()->running,
+                                 30000);
+        int preparing = 0;
+        for (const QList<QVariant>& args : states)
+            preparing += args.first().value<PreviewState>() == PreviewState::Preparing ? 1 : 0;
+        QCOMPARE(preparing, 1);
+        QCOMPARE(preview->runner()->frame()->snapshot.stats.iterations, 34);
+    }
+
+    void theInspectorNamesTheElementUnderTheCursor()
+    {
+        PreviewRunner runner;
+        runner.start(draftSample("cornell-box"), 10);
+        QVERIFY(waitForFinal(runner));
+        const PreviewFrame& frame = *runner.frame();
+        // Straight down onto the middle of the floor (y = 0), from inside the box.
+        const model::Scene scene = test::loadSample("cornell-box");
+        Ray ray;
+        ray.origin = {0.1, 0.5, 0.5};
+        ray.direction = {0.0, -1.0, 0.0};
+        const auto hit = inspectElement(frame, ray);
+        QVERIFY(hit);
+        QVERIFY(hit->element >= 0);
+        QVERIFY2(QString::fromStdString(hit->faceId).contains(QStringLiteral("floor")), hit->faceId.c_str());
+        QVERIFY(std::abs(hit->point.y) < 1e-6);
+        QVERIFY(hit->patch >= 0);
+        QVERIFY(!hit->regionId.empty());
+        QVERIFY(hit->area > 0.0);
+        QCOMPARE(hit->radiosity, frame.snapshot.radiosity[size_t(hit->element)]);
+        QVERIFY(describeInspection(*hit).contains(QString::fromStdString(hit->faceId)));
+        ray.direction = {0.0, 1.0, 0.0};
+        ray.origin = {0.1, 100.0, 0.5};
+        QVERIFY(!inspectElement(frame, ray));
+    }
+
+    void theHemicubeOfAPatchArrivesAsFiveFacesOfElementColours()
+    {
+        PreviewRunner runner;
+        QSignalSpy ready(&runner, &PreviewRunner::hemicubeReady);
+        runner.start(draftSample("cornell-box"), 3);
+        QVERIFY(waitForFinal(runner));
+        runner.requestHemicube(0, 64);
+        QVERIFY(ready.wait(10000));
+        const auto images = ready.first().first().value<HemicubeImages>();
+        QCOMPARE(images.patch, 0);
+        QCOMPARE(images.faces[0].width, 64);
+        QCOMPARE(images.faces[0].height, 64);
+        for (int f = 1; f < 5; ++f)
+            QCOMPARE(images.faces[size_t(f)].height, 32);
+        QVERIFY(images.elementsSeen > 10);
+        int coloured = 0;
+        for (size_t p = 0; p < images.faces[0].argb.size(); ++p) {
+            const int e = images.faces[0].element[p];
+            if (e >= 0) {
+                QCOMPARE(images.faces[0].argb[p], elementColour(e));
+                ++coloured;
+            }
+        }
+        QVERIFY(coloured > 64 * 64 / 2); // the closed box fills the top face
+    }
+
+    void theConvergencePlotHasOnePointPerIteration()
+    {
+        PreviewRunner runner;
+        runner.start(draftSample("cornell-box"), 30);
+        QVERIFY(waitForFinal(runner));
+        const std::vector<ConvergencePoint>& h = runner.frame()->history;
+        QCOMPARE(int(h.size()), 30);
+        for (size_t i = 0; i < h.size(); ++i) {
+            QCOMPARE(h[i].iteration, int(i) + 1);
+            QVERIFY(h[i].balanceError < 1e-9);
+            QVERIFY(std::abs(h[i].unshot + h[i].absorbed + h[i].escaped - 1.0) < 1e-9);
+            if (i > 0)
+                QVERIFY(h[i].absorbed >= h[i - 1].absorbed);
+        }
+        ConvergenceDock dock;
+        dock.setHistory(h);
+        QCOMPARE(dock.pointCount(), 30);
+    }
+
+    void falseColourGivesALegendAndExposureBrightens()
+    {
+        PreviewRunner runner;
+        runner.start(draftSample("cornell-box"), 20);
+        QVERIFY(waitForFinal(runner));
+        PreviewDisplay display;
+        const PreviewLayers normal = buildPreviewLayers(*runner.frame(), display);
+        QVERIFY(!normal.legend);
+        QCOMPARE(normal.solution.triangles.vertices().size() / 7, runner.frame()->lit->indices.size());
+        auto redSum = [&](double exposure) {
+            PreviewDisplay d = display;
+            d.exposure = exposure;
+            const PreviewLayers layers = buildPreviewLayers(*runner.frame(), d);
+            const std::vector<float>& v = layers.solution.triangles.vertices();
+            double sum = 0.0;
+            for (size_t i = 3; i < v.size(); i += 7)
+                sum += v[i];
+            return sum;
+        };
+        const double darker = redSum(-1.0), normalSum = redSum(0.0), brighter = redSum(1.0);
+        qInfo("sum of red: %.1f at exposure -1, %.1f at 0, %.1f at +1", darker, normalSum, brighter);
+        // One stop down: 2^(-1/2.2) = 0.73 of every encoded value (none clips); up: brighter, some clip at white.
+        QVERIFY(darker < 0.8 * normalSum && darker > 0.65 * normalSum);
+        QVERIFY(brighter > normalSum);
+        display.falseColour = true;
+        const PreviewLayers falseColour = buildPreviewLayers(*runner.frame(), display);
+        QVERIFY(falseColour.legend);
+        QVERIFY(!falseColour.legend->ticks.empty());
+        QVERIFY(!falseColour.mesh);
+        display.showMesh = true;
+        const PreviewLayers mesh = buildPreviewLayers(*runner.frame(), display);
+        QVERIFY(mesh.mesh);
+        // Every element edge once: at least 3/2 lines per element (closed meshes share edges).
+        QVERIFY(mesh.mesh->lines.vertices().size() / 14 >= runner.frame()->snapshot.mesh->triangles.size() * 3 / 2);
+    }
+
+    void exportsWriteTheLitModelAndABatchSceneWhoseCommandRuns()
+    {
+        auto window = makeWindow();
+        window->document()->reset(draftSample("cornell-box"));
+        PreviewController* preview = window->preview();
+        QTemporaryDir dir;
+        QVERIFY(preview->exportLitModel(dir.filePath(QStringLiteral("none.ply"))).has_value()); // nothing solved
+        preview->runIterations(10);
+        QVERIFY(waitForFinal(*preview->runner()));
+        QTRY_VERIFY(preview->layersCurrent());
+        for (const char* name : {"lit.ply", "lit.obj", "lit.glb"}) {
+            const QString path = dir.filePath(QString::fromLatin1(name));
+            const auto error = preview->exportLitModel(path);
+            QVERIFY2(!error, error ? qPrintable(*error) : "");
+            QVERIFY(QFileInfo(path).size() > 1000);
+        }
+        QVERIFY(preview->exportLitModel(dir.filePath(QStringLiteral("lit.xyz"))).has_value());
+
+        QString command;
+        const QString batch = dir.filePath(QStringLiteral("batch.json"));
+        QVERIFY(!preview->exportForBatch(batch, &command));
+        QVERIFY(command.startsWith(QStringLiteral("regio-solve solve ")));
+        QVERIFY(command.contains(batch));
+        const model::Result<model::Scene> read = model::loadSceneFile(batch.toStdString());
+        QVERIFY(read.ok());
+        QCOMPARE(read->solver, applyPreset(window->document()->scene().solver, SolverPreset::Final));
+        QVERIFY(read->objects == window->document()->scene().objects);
+        // The command's arguments are regio-solve's (a short run instead of the final one).
+        std::vector<std::string> args;
+        for (const QString& a : batchArguments(batch, preview->display()))
+            args.push_back(a.toStdString());
+        args.insert(args.end(), {"--iterations", "3", "--hemicube", "32", "--quiet"});
+        const test::CommandRun run = test::runRegioSolve(args);
+        QVERIFY2(run.exited && run.exitCode == 0, run.err.c_str());
+        for (const char* out : {"batch.report.json", "batch.glb", "batch.png"})
+            QVERIFY2(QFileInfo::exists(dir.filePath(QString::fromLatin1(out))), out);
+    }
+};
+
+REGIO_QTEST_MAIN(PreviewRunnerTest)
+#include "preview_runner_test.moc"

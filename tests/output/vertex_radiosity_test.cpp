@@ -1,0 +1,413 @@
+// Smooth vertex radiosity (paper §6): element values averaged at the vertices
+// of each plane-and-material group, T-vertex-free output for Gouraud shading.
+#include "output/vertex_radiosity.h"
+
+#include "solver/prepare/prepare.h"
+#include "support/furnished_room.h"
+#include "support/solver_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+using namespace regio;
+using namespace regio::output;
+using namespace regio::solver;
+using namespace regio::test;
+
+namespace {
+
+PreparedScene prepare(const model::Scene& scene, double patchSize, int elementsPerPatch = 4)
+{
+    PrepareOptions options;
+    options.patchSize = patchSize;
+    options.elementsPerPatch = elementsPerPatch;
+    model::Result<PreparedScene> r = prepareScene(scene, options);
+    if (!r.ok())
+        throw std::runtime_error("test scene does not prepare");
+    return std::move(*r);
+}
+
+// A floor rectangle [x0, x1] x [y0, y1] at z = 0 facing +z.
+void addFloor(model::Scene& scene, const std::string& id, double x0, double x1, double y0, double y1,
+              const std::string& material)
+{
+    addPolygon(scene, id, {{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}}, material);
+}
+
+int faceIndex(const PreparedScene& scene, const std::string& id)
+{
+    for (size_t i = 0; i < scene.faces.size(); ++i)
+        if (scene.faces[i].id == id)
+            return static_cast<int>(i);
+    return -1;
+}
+
+// Element values from a function of the element.
+template <typename F>
+std::vector<Rgb> elementValues(const PreparedScene& scene, F&& f)
+{
+    std::vector<Rgb> v;
+    for (const Element& e : scene.elements)
+        v.push_back(f(e));
+    return v;
+}
+
+double triangleArea(const LitMesh& m, size_t t)
+{
+    const glm::dvec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                     c = m.positions[m.indices[3 * t + 2]];
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+// Undirected edges of the output by vertex index, with their use counts.
+// Vertices are shared only within a group, so this is per group.
+std::map<std::pair<uint32_t, uint32_t>, int> edgeUses(const LitMesh& m)
+{
+    std::map<std::pair<uint32_t, uint32_t>, int> uses;
+    for (size_t t = 0; t < m.triangleCount(); ++t)
+        for (size_t c = 0; c < 3; ++c) {
+            const uint32_t a = m.indices[3 * t + c], b = m.indices[3 * t + (c + 1) % 3];
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    return uses;
+}
+
+// Vertices lying strictly inside an edge used by a single triangle: the
+// T-vertices a Gouraud-shaded picture would show as cracks.
+int hangingVertices(const LitMesh& m)
+{
+    int hanging = 0;
+    for (const auto& [edge, n] : edgeUses(m)) {
+        if (n != 1)
+            continue;
+        const glm::dvec3 a = m.positions[edge.first], b = m.positions[edge.second];
+        const glm::dvec3 d = b - a;
+        for (size_t v = 0; v < m.vertexCount(); ++v) {
+            if (v == edge.first || v == edge.second
+                || glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.normals[edge.first])) < 0.999
+                || m.reflectance[v] != m.reflectance[edge.first])
+                continue;
+            const glm::dvec3 p = m.positions[v];
+            const double t = glm::dot(p - a, d) / glm::dot(d, d);
+            if (t > 1e-4 && t < 1.0 - 1e-4 && glm::length(p - (a + d * t)) < 1e-5)
+                ++hanging;
+        }
+    }
+    return hanging;
+}
+
+// Two touching floor pieces of one material: a 1 m square and a 1 x 2 m
+// rectangle beside it. Their common side is meshed from each piece on its
+// own (1 m and 2 m sides divided independently), so the elements meet with
+// T-vertices there. The union is an L of area 3 and perimeter 8.
+PreparedScene tJunctionFloor()
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "small", 0, 1, 0, 1, "grey");
+    addFloor(scene, "large", 1, 2, 0, 2, "grey");
+    return prepare(scene, 0.3);
+}
+
+Rgb ramp(const Vec3& p) { return Rgb(1.0 + 2.0 * p.x, 3.0 - 1.0 * p.y, 2.0 + 0.5 * p.x + 0.5 * p.y); }
+
+} // namespace
+
+TEST(VertexRadiosity, UniformlyLitPlaneHasUniformVertexValues)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 2, 0, 2, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const Rgb value(3.0, 2.0, 1.0);
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element&) { return value; }));
+    EXPECT_FALSE(!checkLitMesh(mesh).ok());
+    ASSERT_FALSE(mesh.empty());
+    for (const glm::vec3& r : mesh.radiosity) {
+        EXPECT_NEAR(r.x, 3.0, 1e-5);
+        EXPECT_NEAR(r.y, 2.0, 1e-5);
+        EXPECT_NEAR(r.z, 1.0, 1e-5);
+    }
+}
+
+TEST(VertexRadiosity, VerticesAreSharedWithinOnePlaneAndMaterial)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const LitMesh smooth = smoothLitMesh(prepared, elementValues(prepared, [](const Element&) { return Rgb(1.0); }));
+    // A conforming grid of elements: far fewer vertices than three per element.
+    EXPECT_LT(smooth.vertexCount(), prepared.elements.size());
+    EXPECT_EQ(smooth.triangleCount(), prepared.elements.size());
+}
+
+TEST(VertexRadiosity, LinearRampIsReproducedAtInteriorVertices)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    const PreparedScene prepared = prepare(scene, 0.1);
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
+    int interior = 0;
+    double worst = 0.0;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        const glm::dvec3 p = mesh.positions[v];
+        if (p.x < 1e-6 || p.x > 1 - 1e-6 || p.y < 1e-6 || p.y > 1 - 1e-6)
+            continue;
+        ++interior;
+        worst = std::max(worst, glm::length(glm::dvec3(mesh.radiosity[v]) - ramp(p)));
+    }
+    EXPECT_GT(interior, 20);
+    // Elements are about 0.05 m and the ramp rises about 2.3 per metre, so
+    // an element's own value misses a corner's by up to ~0.07; the area-
+    // weighted average around the vertex (measured 0.012) is far closer.
+    EXPECT_LT(worst, 0.02);
+}
+
+TEST(VertexRadiosity, ExtrapolationBringsBoundaryValuesCloserToTheRamp)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    const PreparedScene prepared = prepare(scene, 0.1);
+    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
+    SmoothingOptions extrapolate;
+    extrapolate.extrapolateBoundary = true;
+    const LitMesh plain = smoothLitMesh(prepared, values);
+    const LitMesh extrapolated = smoothLitMesh(prepared, values, extrapolate);
+    ASSERT_EQ(plain.vertexCount(), extrapolated.vertexCount());
+    double plainError = 0.0, extrapolatedError = 0.0;
+    for (size_t v = 0; v < plain.vertexCount(); ++v) {
+        const glm::dvec3 p = plain.positions[v];
+        const bool edge = p.x < 1e-6 || p.x > 1 - 1e-6 || p.y < 1e-6 || p.y > 1 - 1e-6;
+        if (!edge)
+            continue;
+        plainError += glm::length(glm::dvec3(plain.radiosity[v]) - ramp(p));
+        extrapolatedError += glm::length(glm::dvec3(extrapolated.radiosity[v]) - ramp(p));
+    }
+    EXPECT_LT(extrapolatedError, 0.5 * plainError);
+}
+
+TEST(VertexRadiosity, DefaultsAverageBoundariesAndDoNotSmoothNeighbours)
+{
+    const SmoothingOptions defaults;
+    EXPECT_FALSE(defaults.extrapolateBoundary);
+    EXPECT_EQ(defaults.neighbourPasses, 0);
+}
+
+TEST(VertexRadiosity, ExtrapolatedValuesAreNeverNegative)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    // Dark at the edge x = 0, bright inside: extrapolation would go below 0.
+    SmoothingOptions extrapolate;
+    extrapolate.extrapolateBoundary = true;
+    const LitMesh mesh = smoothLitMesh(
+        prepared, elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 0.2 ? 0.0 : 10.0); }),
+        extrapolate);
+    for (const glm::vec3& r : mesh.radiosity)
+        EXPECT_GE(r.x, 0.0f);
+}
+
+TEST(VertexRadiosity, CreaseOfABoxCornerIsNotAveragedAcross)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addBox(scene, "room", {0, 0, 0}, {1, 1, 1}, "grey", true);
+    const PreparedScene prepared = prepare(scene, 0.25);
+    // Every wall uniform, each its own value.
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
+        return Rgb(1.0 + static_cast<double>(prepared.properties[static_cast<size_t>(e.properties)].face));
+    }));
+    ASSERT_EQ(mesh.triangleCount(), prepared.elements.size());
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const float expected = 1.0f + static_cast<float>(mesh.triangleFace[t]);
+        for (size_t c = 0; c < 3; ++c)
+            EXPECT_FLOAT_EQ(mesh.radiosity[mesh.indices[3 * t + c]].x, expected);
+    }
+    // The corner (0, 0, 0) exists once per wall meeting there.
+    int corner = 0;
+    for (const glm::vec3& p : mesh.positions)
+        if (glm::length(p) < 1e-6f)
+            ++corner;
+    EXPECT_EQ(corner, 3);
+}
+
+TEST(VertexRadiosity, MaterialBoundaryKeepsBothValues)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addMaterial(scene, "red", {0.6, 0.1, 0.1});
+    addFloor(scene, "left", 0, 1, 0, 1, "grey");
+    addFloor(scene, "right", 1, 2, 0, 1, "red");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const int left = faceIndex(prepared, "left.face");
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
+        return Rgb(e.properties == left ? 1.0 : 4.0);
+    }));
+    int onSeamLow = 0, onSeamHigh = 0;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        if (std::abs(mesh.positions[v].x - 1.0f) > 1e-6f)
+            continue;
+        EXPECT_TRUE(mesh.radiosity[v].x == 1.0f || mesh.radiosity[v].x == 4.0f) << mesh.radiosity[v].x;
+        (mesh.radiosity[v].x == 1.0f ? onSeamLow : onSeamHigh)++;
+    }
+    EXPECT_GT(onSeamLow, 1);
+    EXPECT_EQ(onSeamLow, onSeamHigh);
+}
+
+TEST(VertexRadiosity, LampSetIntoACeilingOfEqualReflectanceKeepsItsBorder)
+{
+    model::Scene scene;
+    addMaterial(scene, "white", {0.7, 0.7, 0.7});
+    addMaterial(scene, "lamp", {0.7, 0.7, 0.7}, {20.0, 20.0, 20.0});
+    addFloor(scene, "ceiling", 0, 1, 0, 1, "white");
+    addFloor(scene, "lamp", 1, 2, 0, 1, "lamp");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const int ceiling = faceIndex(prepared, "ceiling.face");
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
+        return Rgb(e.properties == ceiling ? 1.0 : 20.0);
+    }));
+    for (const glm::vec3& r : mesh.radiosity)
+        EXPECT_TRUE(r.x == 1.0f || r.x == 20.0f) << r.x;
+}
+
+TEST(VertexRadiosity, TouchingFacesOfOnePlaneAndMaterialShareTheirSeam)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "left", 0, 1, 0, 1, "grey");
+    addFloor(scene, "right", 1, 2, 0, 1, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const int left = faceIndex(prepared, "left.face");
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
+        return Rgb(e.properties == left ? 1.0 : 4.0);
+    }));
+    int onSeam = 0;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        if (std::abs(mesh.positions[v].x - 1.0f) > 1e-6f)
+            continue;
+        ++onSeam;
+        EXPECT_GT(mesh.radiosity[v].x, 1.0f);
+        EXPECT_LT(mesh.radiosity[v].x, 4.0f);
+    }
+    EXPECT_GT(onSeam, 1);
+}
+
+TEST(VertexRadiosity, PiecesMeetingWithTVerticesAreJoinedWithoutThem)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const LitMesh flat = litMeshFromSolution(prepared, std::vector<Rgb>(prepared.elements.size(), Rgb(1.0)));
+    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
+    EXPECT_FALSE(!checkLitMesh(mesh).ok());
+    EXPECT_GT(mesh.triangleCount(), prepared.elements.size()) << "elements beside the seam were split at T-vertices";
+    double boundaryLength = 0.0;
+    for (const auto& [edge, uses] : edgeUses(mesh)) {
+        EXPECT_LE(uses, 2);
+        if (uses == 1)
+            boundaryLength += glm::length(mesh.positions[edge.first] - mesh.positions[edge.second]);
+    }
+    // Only the floor's outline is open: every inner edge is shared by two.
+    EXPECT_NEAR(boundaryLength, 8.0, 1e-4);
+    EXPECT_EQ(hangingVertices(mesh), 0);
+    EXPECT_GT(hangingVertices(flat), 0) << "the element mesh itself has T-vertices at the seam";
+}
+
+TEST(VertexRadiosity, TotalAreaIsPreserved)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const LitMesh mesh = smoothLitMesh(prepared, std::vector<Rgb>(prepared.elements.size(), Rgb(1.0)));
+    double area = 0.0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        EXPECT_GT(triangleArea(mesh, t), 0.0) << "no degenerate triangle";
+        area += triangleArea(mesh, t);
+    }
+    EXPECT_NEAR(area, 3.0, 1e-5);
+    EXPECT_NEAR(area, prepared.stats.area, 1e-5);
+}
+
+TEST(VertexRadiosity, OutputTrianglesFaceLikeTheirElements)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const LitMesh mesh = smoothLitMesh(prepared, std::vector<Rgb>(prepared.elements.size(), Rgb(1.0)));
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+                        c = mesh.positions[mesh.indices[3 * t + 2]];
+        EXPECT_GT(glm::dot(glm::cross(b - a, c - a), mesh.normals[mesh.indices[3 * t]]), 0.0f);
+    }
+}
+
+TEST(VertexRadiosity, NeighbourSmoothingSoftensAShadowBorder)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 2, 0, 2, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 1.0 ? 0.0 : 10.0); });
+    SmoothingOptions smoothing;
+    smoothing.neighbourPasses = 4;
+    const LitMesh sharp = smoothLitMesh(prepared, values);
+    const LitMesh soft = smoothLitMesh(prepared, values, smoothing);
+    // A quarter metre into the shadow the default keeps it dark; smoothing bleeds light in.
+    float sharpMax = 0.0f, softMax = 0.0f;
+    for (size_t v = 0; v < sharp.vertexCount(); ++v)
+        if (sharp.positions[v].x < 0.75f)
+            sharpMax = std::max(sharpMax, sharp.radiosity[v].x);
+    for (size_t v = 0; v < soft.vertexCount(); ++v)
+        if (soft.positions[v].x < 0.75f)
+            softMax = std::max(softMax, soft.radiosity[v].x);
+    EXPECT_EQ(sharpMax, 0.0f);
+    EXPECT_GT(softMax, 0.0f);
+}
+
+TEST(VertexRadiosity, OutputChoiceGivesFlatOrSmoothMesh)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const std::vector<Rgb> values(prepared.elements.size(), Rgb(2.0));
+    const LitMesh flat = litMeshForOutput(prepared, values, false);
+    const LitMesh smooth = litMeshForOutput(prepared, values, true);
+    EXPECT_EQ(flat.vertexCount(), 3 * prepared.elements.size());
+    EXPECT_LT(smooth.vertexCount(), flat.vertexCount());
+    EXPECT_EQ(smooth.faceIds, flat.faceIds);
+}
+
+TEST(VertexRadiosity, WrongValueCountIsRefused)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const std::vector<Rgb> values(prepared.elements.size() + 1, Rgb(2.0));
+    EXPECT_THROW(smoothLitMesh(prepared, values), std::invalid_argument);
+}
+
+TEST(VertexRadiosity, FurnishedRoomOutputIsTVertexFreeAndKeepsItsArea)
+{
+    // Furniture planes split the floor, walls and each other into fragments
+    // meshed independently: T-vertices everywhere in the element mesh.
+    const PreparedScene prepared = prepare(test::furnishedRoom(7, 20), 0.5);
+    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
+    const auto start = std::chrono::steady_clock::now();
+    const LitMesh mesh = smoothLitMesh(prepared, values);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RecordProperty("elements", static_cast<int>(prepared.elements.size()));
+    RecordProperty("triangles", static_cast<int>(mesh.triangleCount()));
+    RecordProperty("milliseconds", static_cast<int>(seconds * 1000.0));
+    EXPECT_FALSE(!checkLitMesh(mesh).ok());
+    EXPECT_GE(mesh.triangleCount(), prepared.elements.size());
+    for (const auto& [edge, uses] : edgeUses(mesh))
+        EXPECT_LE(uses, 2);
+    EXPECT_EQ(hangingVertices(mesh), 0);
+    double area = 0.0;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        area += triangleArea(mesh, t);
+    EXPECT_NEAR(area, prepared.stats.area, 1e-6 * prepared.stats.area);
+}

@@ -1,0 +1,144 @@
+// Element pieces (solver/prepare/pieces.h): elements cut by the separating and BSP
+// planes exactly where their faces were cut, without loss and without cracks.
+#include "solver/prepare/pieces.h"
+#include "solver/prepare/prepare.h"
+#include "support/sample_scenes.h"
+#include "support/solver_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace regio;
+using namespace regio::solver;
+using model::Vec3;
+
+namespace {
+
+PreparedScene prepare(const model::Scene& scene, RegionsMode mode)
+{
+    PrepareOptions options;
+    options.regions = mode;
+    options.autoRegionPatchThreshold = 100;
+    model::Result<PreparedScene> r = prepareScene(scene, options);
+    EXPECT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics()[0].message);
+    return r.ok() ? std::move(*r) : PreparedScene{};
+}
+
+struct NamedScene {
+    std::string name;
+    model::Scene scene;
+};
+
+std::vector<NamedScene> scenes()
+{
+    return {{"two-lights-room", test::loadSample("two-lights-room")},
+            {"cornell-box", test::loadSample("cornell-box")},
+            {"random 3", test::randomRegionScene(3, 2, 2)},
+            {"random 11", test::randomRegionScene(11, 3, 2)}};
+}
+
+double pieceArea(const PreparedScene& s, const Piece& p)
+{
+    const Vec3 a = s.pieceVertices[size_t(p.vertices[0])], b = s.pieceVertices[size_t(p.vertices[1])],
+               c = s.pieceVertices[size_t(p.vertices[2])];
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+constexpr RegionsMode kModes[] = {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto};
+
+} // namespace
+
+TEST(Pieces, ThePiecesOfEveryElementCoverExactlyItsAreaAndNoneIsLost)
+{
+    for (const NamedScene& named : scenes())
+        for (RegionsMode mode : kModes) {
+            const PreparedScene s = prepare(named.scene, mode);
+            ASSERT_FALSE(s.elements.empty()) << named.name;
+            EXPECT_EQ(s.stats.lostPieces, 0) << named.name;
+            EXPECT_EQ(s.stats.lostPieceArea, 0.0) << named.name;
+            std::vector<double> covered(s.elements.size(), 0.0);
+            for (const Piece& p : s.pieces)
+                covered[size_t(p.element)] += pieceArea(s, p);
+            for (size_t e = 0; e < s.elements.size(); ++e)
+                ASSERT_NEAR(covered[e], s.elements[e].area, 1e-9 * s.elements[e].area)
+                    << named.name << " element " << e;
+        }
+}
+
+TEST(Pieces, ElementsAreCutWhereTheirFacesWereCutAndStayWhole)
+{
+    // Automatic regions cut the sample's room surfaces; the cut elements have
+    // pieces in several nodes, every piece in a node holding its face.
+    const PreparedScene s = prepare(test::loadSample("two-lights-room"), RegionsMode::Auto);
+    std::vector<std::vector<int>> nodesOf(s.elements.size());
+    for (size_t n = 0; n < s.nodes.size(); ++n) {
+        const BspNode& node = s.nodes[n];
+        for (int i = node.firstPiece; i < node.firstPiece + node.pieceCount; ++i) {
+            const int element = s.pieces[size_t(i)].element;
+            if (nodesOf[size_t(element)].empty() || nodesOf[size_t(element)].back() != int(n))
+                nodesOf[size_t(element)].push_back(int(n));
+            bool holds = false;
+            for (int f = node.firstFragment; f < node.firstFragment + node.fragmentCount; ++f)
+                holds = holds || s.fragments[size_t(f)].properties == s.elements[size_t(element)].properties;
+            EXPECT_TRUE(holds) << "piece " << i << " of element " << element << " in node " << n;
+        }
+    }
+    int cut = 0;
+    for (const auto& nodes : nodesOf) {
+        EXPECT_FALSE(nodes.empty()) << "every element is painted";
+        cut += nodes.size() > 1;
+    }
+    EXPECT_GT(cut, 10) << "the premise: region planes cut elements";
+    EXPECT_GT(s.pieces.size(), s.elements.size());
+}
+
+TEST(Pieces, CutPointsAreSharedSoThePiecesOfAFaceMeetEdgeToEdge)
+{
+    // Per input face, every piece edge is either shared in opposite directions
+    // by exactly two piece triangles or lies on the face's outline: no crack
+    // and no overlap for the hemicube rasteriser's pixel-centre rule.
+    for (const NamedScene& named : scenes())
+        for (RegionsMode mode : kModes) {
+            const PreparedScene s = prepare(named.scene, mode);
+            std::vector<std::map<std::pair<int, int>, int>> directed(s.faces.size());
+            for (const Piece& p : s.pieces) {
+                auto& edges = directed[size_t(s.elements[size_t(p.element)].properties)];
+                for (int i = 0; i < 3; ++i)
+                    ++edges[{p.vertices[size_t(i)], p.vertices[size_t((i + 1) % 3)]}];
+            }
+            for (size_t f = 0; f < s.faces.size(); ++f) {
+                const InputFace& face = s.faces[f];
+                double boundary = 0.0;
+                for (const auto& [edge, count] : directed[f]) {
+                    ASSERT_EQ(count, 1) << named.name << " face " << face.id;
+                    if (!directed[f].count({edge.second, edge.first}))
+                        boundary += glm::length(s.pieceVertices[size_t(edge.second)] -
+                                                s.pieceVertices[size_t(edge.first)]);
+                }
+                double perimeter = 0.0;
+                for (size_t i = 0; i < face.polygon.size(); ++i)
+                    perimeter += glm::length(face.polygon[(i + 1) % face.polygon.size()] - face.polygon[i]);
+                EXPECT_NEAR(boundary, perimeter, 1e-9) << named.name << " face " << face.id;
+            }
+        }
+}
+
+TEST(Pieces, RebuildingGivesTheSamePieces)
+{
+    PreparedScene s = prepare(test::randomRegionScene(5, 2, 2), RegionsMode::Auto);
+    const std::vector<Piece> before = s.pieces;
+    const std::vector<Vec3> vertices = s.pieceVertices;
+    buildPieces(s);
+    ASSERT_EQ(s.pieces.size(), before.size());
+    for (size_t i = 0; i < before.size(); ++i) {
+        EXPECT_EQ(s.pieces[i].vertices, before[i].vertices);
+        EXPECT_EQ(s.pieces[i].element, before[i].element);
+    }
+    EXPECT_EQ(s.pieceVertices, vertices);
+}
