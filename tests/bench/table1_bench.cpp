@@ -55,7 +55,7 @@ int elementCount(const model::Scene& scene, double patchSize, int elementsPerPat
 // paper's element count.
 const Setup& setup()
 {
-    static const Setup s = [] {
+    static const Setup instance = [] {
         Setup s;
         const std::string path = regio::test::samplePath("two-lights-room").string();
         model::Result<model::Scene> read = model::loadSceneFile(path);
@@ -82,7 +82,7 @@ const Setup& setup()
                     s.patchSize, s.elementsPerPatch, s.elements, kPaperElements);
         return s;
     }();
-    return s;
+    return instance;
 }
 
 double paperSeconds(int resolution)

@@ -195,8 +195,8 @@ TEST_P(CheckBrokenFile, ExitsOneAndSaysWhere)
 
 INSTANTIATE_TEST_SUITE_P(TestData, CheckBrokenFile,
                          testing::ValuesIn(regio::test::loadBrokenFileTable()),
-                         [](const testing::TestParamInfo<regio::test::BrokenFile>& info) {
-                             std::string name = info.param.name;
+                         [](const testing::TestParamInfo<regio::test::BrokenFile>& test) {
+                             std::string name = test.param.name;
                              for (char& c : name)
                                  if (!std::isalnum(static_cast<unsigned char>(c)))
                                      c = '_';

@@ -202,7 +202,7 @@ TEST(SolveAdaptiveOptions, TheReportsEnergyBooksBalanceWithSubdivisionOn)
     const json r = solveReport(scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on"}, kTwoLights);
     ASSERT_GE(r["adaptive"]["rounds"].get<int>(), 1);
     const json& e = r["energy"];
-    for (int c = 0; c < 3; ++c) {
+    for (size_t c = 0; c < 3; ++c) {
         const double emitted = e["emitted"][c].get<double>();
         const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
         EXPECT_NEAR(sum, emitted, 1e-9 * emitted) << "channel " << c;

@@ -123,7 +123,7 @@ TEST(SolveCommand, EnergyInTheReportBalancesPerChannel)
     const json e = json::parse(readText(scratch / "r.json"))["energy"];
     // The lamp: 1 m^2 at (10, 8, 6) W/m^2.
     EXPECT_NEAR(e["emitted"][0].get<double>(), 10.0, 1e-9);
-    for (int c = 0; c < 3; ++c) {
+    for (size_t c = 0; c < 3; ++c) {
         const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
         EXPECT_NEAR(sum, e["emitted"][c].get<double>(), 1e-6 * e["emitted"][c].get<double>());
     }

@@ -94,9 +94,9 @@ void expectMatchesMesh(const json& doc, const std::string& bin, const LitMesh& m
 
     const json& position = doc["accessors"][attributes["POSITION"].get<size_t>()];
     const LitBounds bounds = litMeshBounds(mesh);
-    for (int k = 0; k < 3; ++k) {
-        EXPECT_EQ(position["min"][k].get<float>(), bounds.min[k]);
-        EXPECT_EQ(position["max"][k].get<float>(), bounds.max[k]);
+    for (glm::length_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(position["min"][size_t(k)].get<float>(), bounds.min[k]);
+        EXPECT_EQ(position["max"][size_t(k)].get<float>(), bounds.max[k]);
     }
     EXPECT_EQ(readVec3(doc, bin, "POSITION"), mesh.positions);
     EXPECT_EQ(readVec3(doc, bin, "NORMAL"), mesh.normals);

@@ -30,7 +30,7 @@ LitMesh bigPlane()
     LitMesh mesh;
     for (int i = 0; i < 22000; ++i) { // 66 000 vertices: 32-bit indices
         const float x = static_cast<float>(i % 200) * 0.1f, z = static_cast<float>(i / 200) * 0.1f;
-        test::addTriangle(mesh, {x, 0, z}, {x, 0, z + 0.1f}, {x + 0.1f, 0, z}, glm::vec3(0.01f * (i % 100)), "plane");
+        test::addTriangle(mesh, {x, 0, z}, {x, 0, z + 0.1f}, {x + 0.1f, 0, z}, glm::vec3(0.01f * float(i % 100)), "plane");
     }
     return mesh;
 }

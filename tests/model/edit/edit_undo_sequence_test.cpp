@@ -168,7 +168,7 @@ private:
     }
 
     int pick(int n) { return int(m_random() % std::uint32_t(n)); }
-    double real(double lo, double hi) { return lo + (hi - lo) * (m_random() / 4294967296.0); }
+    double real(double lo, double hi) { return lo + (hi - lo) * (double(m_random()) / 4294967296.0); }
 
     std::string randomObject(const Scene& scene)
     {

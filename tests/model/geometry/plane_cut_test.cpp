@@ -311,7 +311,7 @@ TEST(PlaneCut, RandomPlanesThroughNonConvexPartsAlwaysGiveClosedConvexHalves)
     // mt19937's sequence is fixed by the standard, so the planes are the same
     // everywhere; the scaling is done by hand for the same reason.
     std::mt19937 random(20240611);
-    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (random() / 4294967296.0); };
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (double(random()) / 4294967296.0); };
     int cuts = 0;
     for (const Part& part : {lPrism(), frame(), makePrism("p", 7, 1.0, 1.0, {0, 0, 0}, "w").value()}) {
         double volume = signedVolume(part);

@@ -602,8 +602,8 @@ TEST_P(InvalidSceneFile, ReadsCleanlyAndBreaksExactlyItsRule)
 }
 
 INSTANTIATE_TEST_SUITE_P(Rules, InvalidSceneFile, testing::ValuesIn(loadInvalidFileTable()),
-                         [](const testing::TestParamInfo<InvalidFile>& info) {
-                             std::string name = info.param.name.substr(0, info.param.name.find('.'));
+                         [](const testing::TestParamInfo<InvalidFile>& test) {
+                             std::string name = test.param.name.substr(0, test.param.name.find('.'));
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });

@@ -143,8 +143,9 @@ TEST(AdaptiveRefinement, EachRoundGrowsTheMeshOnlyByItsShareOfTheBudget)
         }
         const int allowed = initial + (2 * initial * std::min(round, policy.maxRounds)) / policy.maxRounds;
         EXPECT_LE(int(radiosity.size()), allowed + slack) << "round " << round;
-        if (round <= policy.maxRounds)
+        if (round <= policy.maxRounds) {
             EXPECT_GE(int(radiosity.size()), allowed - slack) << "round " << round << " left budget unused";
+        }
     }
     EXPECT_EQ(r.rounds(), policy.maxRounds) << "no round after the last allowed one";
     EXPECT_LE(int(radiosity.size()), r.elementLimit() + slack);

@@ -23,7 +23,7 @@ struct Coverage {
     explicit Coverage(const Hemicube& h) : n(h.resolution()), count(static_cast<size_t>(h.totalPixelCount()), 0)
     {
         for (int f = 0; f < kHemicubeFaceCount; ++f)
-            offset[f] = h.faceOffset(static_cast<HemicubeFace>(f));
+            offset[size_t(f)] = h.faceOffset(static_cast<HemicubeFace>(f));
     }
     void operator()(HemicubeFace f, int row, int x0, int x1)
     {
