@@ -37,8 +37,8 @@ std::string counted(std::size_t count, const char* singular)
 
 std::string summaryOf(const SceneInput& input)
 {
-    const auto errors = static_cast<std::size_t>(std::count_if(
-        input.diagnostics.begin(), input.diagnostics.end(), [](const auto& d) { return d.isError(); }));
+    const auto errors = static_cast<std::size_t>(
+        std::count_if(input.diagnostics.begin(), input.diagnostics.end(), [](const auto& d) { return d.isError(); }));
     const std::size_t warnings = input.diagnostics.size() - errors;
     const std::string file = input.name == "-" ? "<stdin>" : input.name;
     if (input.unreadable)
@@ -57,9 +57,8 @@ std::string summaryOf(const SceneInput& input)
     if (warnings > 0)
         summary += " with " + counted(warnings, "warning");
     summary += " (" + counted(input.scene->materials.size(), "material") + ", " +
-               counted(input.scene->objects.size(), "object") + ", " + counted(parts, "part") +
-               ", " + counted(faces, "face") + ", " +
-               counted(input.scene->regions.size(), "region") + ")";
+               counted(input.scene->objects.size(), "object") + ", " + counted(parts, "part") + ", " +
+               counted(faces, "face") + ", " + counted(input.scene->regions.size(), "region") + ")";
     return summary;
 }
 

@@ -6,9 +6,9 @@ namespace regio::cli {
 
 // Exit codes shared by every command, so scripts can tell "the scene has
 // errors" from "the command could not run at all".
-inline constexpr int kExitOk = 0;       // clean, or warnings only
-inline constexpr int kExitErrors = 1;   // at least one error diagnostic
-inline constexpr int kExitFailure = 2;  // usage error or unreadable file
+inline constexpr int kExitOk = 0;      // clean, or warnings only
+inline constexpr int kExitErrors = 1;  // at least one error diagnostic
+inline constexpr int kExitFailure = 2; // usage error or unreadable file
 
 // `regio-solve check [--quiet] SCENE.json...`: format and validation
 // diagnostics of every file.

@@ -41,9 +41,8 @@ int main(int argc, char** argv)
         return kExitOk;
     }
     if (command == "--version") {
-        std::cout << "regio-solve " << REGIO_VERSION << " (scene format "
-                  << regio::model::kSceneFormatTag << " version "
-                  << regio::model::kSceneFormatVersion << ")\n";
+        std::cout << "regio-solve " << REGIO_VERSION << " (scene format " << regio::model::kSceneFormatTag
+                  << " version " << regio::model::kSceneFormatVersion << ")\n";
         return kExitOk;
     }
     if (command == "check")

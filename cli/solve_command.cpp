@@ -3,11 +3,11 @@
 #include "cli/commands.h"
 #include "cli/scene_input.h"
 
+#include "model/io/printable.h"
 #include "output/export.h"
 #include "output/report.h"
-#include "solver/solver.h"
 #include "output/vertex_radiosity.h"
-#include "model/io/printable.h"
+#include "solver/solver.h"
 
 #include <nlohmann/json.hpp>
 
@@ -147,10 +147,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
         if (eq != std::string::npos) {
             value = arg.substr(eq + 1);
             arg = arg.substr(0, eq);
-        } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" ||
-                   arg == "--visibility" || arg == "--regions" || arg == "--report" ||
-                   arg == "--out" || arg == "--image" || arg == "--size" || arg == "--exposure" ||
-                   arg == "--gamma" || arg == "--false-colour" || arg == "--adaptive" ||
+        } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" || arg == "--visibility" ||
+                   arg == "--regions" || arg == "--report" || arg == "--out" || arg == "--image" || arg == "--size" ||
+                   arg == "--exposure" || arg == "--gamma" || arg == "--false-colour" || arg == "--adaptive" ||
                    arg == "--threshold" || arg == "--min-edge" || arg == "--anchoring") {
             if (i + 1 >= argc)
                 return usageError(arg + " needs a value");
@@ -216,8 +215,8 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
             int w = 0, h = 0;
             char x = 0;
             std::istringstream in(value);
-            if (!(in >> w >> x >> h) || x != 'x' || in.peek() != std::char_traits<char>::eof() || w < 1 ||
-                h < 1 || w > 16384 || h > 16384)
+            if (!(in >> w >> x >> h) || x != 'x' || in.peek() != std::char_traits<char>::eof() || w < 1 || h < 1 ||
+                w > 16384 || h > 16384)
                 return usageError("--size expects WIDTHxHEIGHT from 1x1 to 16384x16384, not '" + value + "'");
             options.output.imageWidth = w;
             options.output.imageHeight = h;
@@ -260,7 +259,10 @@ std::string displayName(const std::string& name) { return name == "-" ? "<stdin>
 class ProgressLine {
 public:
     ProgressLine(std::string name, int maxIterations, bool enabled)
-        : m_name(std::move(name)), m_max(maxIterations), m_enabled(enabled), m_start(Clock::now())
+        : m_name(std::move(name))
+        , m_max(maxIterations)
+        , m_enabled(enabled)
+        , m_start(Clock::now())
     {
     }
     ~ProgressLine() { finish(); }
@@ -274,9 +276,8 @@ public:
             return;
         m_last = now;
         char line[256];
-        std::snprintf(line, sizeof line, "%s: iteration %d/%d, unshot %.3g %% of emitted, %.1f s",
-                      m_name.c_str(), s.iterations, m_max, 100.0 * s.unshotRatio,
-                      std::chrono::duration<double>(now - m_start).count());
+        std::snprintf(line, sizeof line, "%s: iteration %d/%d, unshot %.3g %% of emitted, %.1f s", m_name.c_str(),
+                      s.iterations, m_max, 100.0 * s.unshotRatio, std::chrono::duration<double>(now - m_start).count());
         std::string text = line;
         const size_t width = text.size();
         if (text.size() < m_width)
@@ -397,8 +398,8 @@ int runSolve(int argc, char** argv)
         const int inputCode = exitCodeOf(input);
         if (inputCode != kExitOk) {
             exitCode = std::max(exitCode, inputCode);
-            reports.push_back(unsolvedEntry(input, input.diagnostics,
-                                            inputCode == kExitFailure ? "unreadable" : "invalid"));
+            reports.push_back(
+                unsolvedEntry(input, input.diagnostics, inputCode == kExitFailure ? "unreadable" : "invalid"));
             if (!options.quiet)
                 summary << displayName(file) << ": not solved (the scene has errors)\n";
             continue;

@@ -35,14 +35,12 @@ inline bool hasErrors(const Diagnostics& diagnostics)
     return false;
 }
 
-inline Diagnostic makeError(std::string message, std::string pointer = {},
-                            std::vector<std::string> idPath = {})
+inline Diagnostic makeError(std::string message, std::string pointer = {}, std::vector<std::string> idPath = {})
 {
     return Diagnostic{Severity::Error, std::move(message), std::move(pointer), std::move(idPath)};
 }
 
-inline Diagnostic makeWarning(std::string message, std::string pointer = {},
-                              std::vector<std::string> idPath = {})
+inline Diagnostic makeWarning(std::string message, std::string pointer = {}, std::vector<std::string> idPath = {})
 {
     return Diagnostic{Severity::Warning, std::move(message), std::move(pointer), std::move(idPath)};
 }

@@ -28,11 +28,25 @@ class [[nodiscard]] Result {
 public:
     using value_type = T;
 
-    Result(T value) : m_value(std::move(value)) {}
-    Result(T value, Diagnostics warnings) : m_value(std::move(value)), m_diagnostics(std::move(warnings)) {}
-    Result(Diagnostic error) : m_diagnostics{std::move(error)} {}
+    Result(T value)
+        : m_value(std::move(value))
+    {
+    }
+    Result(T value, Diagnostics warnings)
+        : m_value(std::move(value))
+        , m_diagnostics(std::move(warnings))
+    {
+    }
+    Result(Diagnostic error)
+        : m_diagnostics{std::move(error)}
+    {
+    }
     // A failure: `diagnostics` must hold at least one error.
-    Result(Diagnostics diagnostics) : m_diagnostics(std::move(diagnostics)) { assert(hasErrors(m_diagnostics)); }
+    Result(Diagnostics diagnostics)
+        : m_diagnostics(std::move(diagnostics))
+    {
+        assert(hasErrors(m_diagnostics));
+    }
 
     // The failure of another result, passed on (its warnings and errors).
     template <typename U>

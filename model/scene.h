@@ -13,7 +13,7 @@ namespace regio::model {
 
 struct Material {
     std::string id;
-    std::string name;            // optional display name; empty = use the id
+    std::string name;               // optional display name; empty = use the id
     Rgb reflectance{0.5, 0.5, 0.5}; // diffuse coefficient per channel, [0,1)
     Rgb emission{0.0, 0.0, 0.0};    // radiant exitance per unit area (paper §5.1)
 
@@ -79,15 +79,15 @@ enum class Visibility { Painter, ZBuffer };
 // the whole scene, the baseline) or automatic boxes by patch count (§3).
 enum class RegionsMode { Authored, None, Auto };
 
-const char* visibilityName(Visibility v);        // "painter" | "zbuffer"
-const char* regionsModeName(RegionsMode mode);   // "authored" | "none" | "auto"
+const char* visibilityName(Visibility v);      // "painter" | "zbuffer"
+const char* regionsModeName(RegionsMode mode); // "authored" | "none" | "auto"
 std::optional<Visibility> parseVisibility(std::string_view text);
 std::optional<RegionsMode> parseRegionsMode(std::string_view text);
 
 struct SolverSettings {
-    int hemicube = 150;        // top face resolution N (sides are N x N/2)
-    double patchSize = 0.5;    // strip width of the patch triangulation, metres
-    int elementsPerPatch = 4;  // element / patch ratio
+    int hemicube = 150;       // top face resolution N (sides are N x N/2)
+    double patchSize = 0.5;   // strip width of the patch triangulation, metres
+    int elementsPerPatch = 4; // element / patch ratio
     AdaptiveSettings adaptive;
     int maxIterations = 500;
     double convergence = 0.001; // stop when unshot / emitted power falls below

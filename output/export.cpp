@@ -45,8 +45,8 @@ model::Check writeLitModel(const std::string& path, const LitMesh& mesh, const D
 {
     const auto format = modelFormatForPath(path);
     if (!format)
-        return model::makeError("cannot write " + path + ": unknown model format \"" + lowerExtension(path)
-               + "\" (use .gltf, .glb, .ply or .obj)");
+        return model::makeError("cannot write " + path + ": unknown model format \"" + lowerExtension(path) +
+                                "\" (use .gltf, .glb, .ply or .obj)");
     switch (*format) {
     case ModelFormat::Gltf: return writeGltf(path, mesh, colours, GltfContainer::Separate);
     case ModelFormat::Glb: return writeGltf(path, mesh, colours, GltfContainer::Binary);
@@ -72,15 +72,16 @@ PreparedColours prepareColours(const LitMesh& mesh, const DisplaySettings& setti
 model::Check writeOutputs(const LitMesh& mesh, const OutputRequest& request)
 {
     if (!request.modelPath.empty() && !modelFormatForPath(request.modelPath))
-        return model::makeError("cannot write " + request.modelPath + ": unknown model format \"" + lowerExtension(request.modelPath)
-               + "\" (use .gltf, .glb, .ply or .obj)");
+        return model::makeError("cannot write " + request.modelPath + ": unknown model format \"" +
+                                lowerExtension(request.modelPath) + "\" (use .gltf, .glb, .ply or .obj)");
     if (!request.imagePath.empty()) {
         if (lowerExtension(request.imagePath) != ".png")
-            return model::makeError("cannot write " + request.imagePath + ": images are written as PNG (use a .png name)");
-        if (request.imageWidth < 1 || request.imageHeight < 1 || request.imageWidth > kMaxImageSide
-            || request.imageHeight > kMaxImageSide)
-            return model::makeError("cannot write " + request.imagePath + ": the image size must be between 1 and "
-                   + std::to_string(kMaxImageSide) + " pixels a side");
+            return model::makeError("cannot write " + request.imagePath +
+                                    ": images are written as PNG (use a .png name)");
+        if (request.imageWidth < 1 || request.imageHeight < 1 || request.imageWidth > kMaxImageSide ||
+            request.imageHeight > kMaxImageSide)
+            return model::makeError("cannot write " + request.imagePath + ": the image size must be between 1 and " +
+                                    std::to_string(kMaxImageSide) + " pixels a side");
         if (request.camera) {
             if (model::Check problem = checkCamera(*request.camera); !problem)
                 return model::makeError("cannot write " + request.imagePath + ": " + problem.error().message);

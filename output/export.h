@@ -16,8 +16,8 @@
 #include "output/false_colour.h"
 #include "output/lit_mesh.h"
 #include "output/software_render.h"
-#include "solver/solver.h"
 #include "output/tone_map.h"
+#include "solver/solver.h"
 
 #include <optional>
 #include <string>
@@ -39,7 +39,7 @@ enum class ColourMode {
 };
 
 struct DisplaySettings {
-    ToneMapSettings toneMap;      // exposure, white reference, encoding, clamp, ambient
+    ToneMapSettings toneMap; // exposure, white reference, encoding, clamp, ambient
     ColourMode colours = ColourMode::ToneMapped;
     FalseColourSettings falseColour;
 };
@@ -53,12 +53,12 @@ struct PreparedColours {
 PreparedColours prepareColours(const LitMesh& mesh, const DisplaySettings& settings);
 
 struct OutputRequest {
-    std::string modelPath;                // --out; empty = no model
-    std::string imagePath;                // --image (.png); empty = no picture
+    std::string modelPath; // --out; empty = no model
+    std::string imagePath; // --image (.png); empty = no picture
     int imageWidth = 1024;
     int imageHeight = 768;
-    int supersample = 2;                  // samples per pixel along each axis
-    std::optional<model::Camera> camera;  // the scene's camera; empty = a view of the whole model
+    int supersample = 2;                 // samples per pixel along each axis
+    std::optional<model::Camera> camera; // the scene's camera; empty = a view of the whole model
     DisplaySettings display;
     // Add the snapshot's ambient term (Cohen et al. 1988) to what is shown:
     // a plausible picture of an early, unconverged solution. Off, the files

@@ -27,7 +27,7 @@ constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 constexpr int kTriangles = 4;
 
-constexpr uint32_t kGlbMagic = 0x46546C67;    // "glTF"
+constexpr uint32_t kGlbMagic = 0x46546C67;     // "glTF"
 constexpr uint32_t kGlbJsonChunk = 0x4E4F534A; // "JSON"
 constexpr uint32_t kGlbBinChunk = 0x004E4942;  // "BIN\0"
 
@@ -43,10 +43,7 @@ void appendU16(std::string& out, uint16_t v)
     out.push_back(static_cast<char>(v >> 8));
 }
 
-void appendFloat(std::string& out, float v)
-{
-    appendU32(out, std::bit_cast<uint32_t>(v));
-}
+void appendFloat(std::string& out, float v) { appendU32(out, std::bit_cast<uint32_t>(v)); }
 
 void padTo4(std::string& out, char fill)
 {
@@ -84,7 +81,8 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
 {
     GltfParts parts;
     json& doc = parts.document;
-    doc["asset"] = {{"version", "2.0"}, {"generator", "Regio"},
+    doc["asset"] = {{"version", "2.0"},
+                    {"generator", "Regio"},
                     {"extras", {{"colours", colours.description}, {"radiosityUnit", "W/m^2"}}}};
     doc["scene"] = 0;
     if (mesh.empty()) {
@@ -110,9 +108,11 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
             lo = glm::min(lo, v);
             hi = glm::max(hi, v);
         }
-        bufferViews.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset},
-                               {"target", kArrayBuffer}});
-        json accessor = {{"bufferView", bufferViews.size() - 1}, {"componentType", kFloat}, {"count", values.size()},
+        bufferViews.push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset}, {"target", kArrayBuffer}});
+        json accessor = {{"bufferView", bufferViews.size() - 1},
+                         {"componentType", kFloat},
+                         {"count", values.size()},
                          {"type", "VEC3"}};
         if (withBounds) {
             accessor["min"] = {lo.x, lo.y, lo.z};
@@ -142,8 +142,8 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
     }
     const size_t indexLength = bin.size() - indexOffset;
     padTo4(bin, '\0');
-    bufferViews.push_back({{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indexLength},
-                           {"target", kElementArrayBuffer}});
+    bufferViews.push_back(
+        {{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indexLength}, {"target", kElementArrayBuffer}});
     accessors.push_back({{"bufferView", bufferViews.size() - 1},
                          {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
                          {"count", mesh.indices.size()},
@@ -156,23 +156,20 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
     doc["buffers"] = json::array({buffer});
     doc["bufferViews"] = std::move(bufferViews);
     doc["accessors"] = std::move(accessors);
-    doc["materials"] = json::array({{{"name", "radiosity (unlit vertex colours)"},
-                                     {"pbrMetallicRoughness",
-                                      {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}},
-                                       {"metallicFactor", 0.0},
-                                       {"roughnessFactor", 1.0}}},
-                                     {"extensions", {{"KHR_materials_unlit", json::object()}}}}});
+    doc["materials"] =
+        json::array({{{"name", "radiosity (unlit vertex colours)"},
+                      {"pbrMetallicRoughness",
+                       {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
+                      {"extensions", {{"KHR_materials_unlit", json::object()}}}}});
     doc["extensionsUsed"] = json::array({"KHR_materials_unlit"});
-    doc["meshes"] = json::array({{{"name", "radiosity solution"},
-                                  {"primitives",
-                                   json::array({{{"attributes",
-                                                  {{"POSITION", position},
-                                                   {"NORMAL", normal},
-                                                   {"COLOR_0", colour},
-                                                   {"_RADIOSITY", radiosity}}},
-                                                 {"indices", indices},
-                                                 {"material", 0},
-                                                 {"mode", kTriangles}}})}}});
+    doc["meshes"] = json::array(
+        {{{"name", "radiosity solution"},
+          {"primitives",
+           json::array({{{"attributes",
+                          {{"POSITION", position}, {"NORMAL", normal}, {"COLOR_0", colour}, {"_RADIOSITY", radiosity}}},
+                         {"indices", indices},
+                         {"material", 0},
+                         {"mode", kTriangles}}})}}});
     doc["nodes"] = json::array({{{"name", "radiosity solution"}, {"mesh", 0}}});
     doc["scenes"] = json::array({{{"name", "radiosity solution"}, {"nodes", {0}}}});
     return parts;
@@ -213,7 +210,7 @@ std::string gltfBufferPath(const std::string& gltfPath)
 }
 
 model::Check writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
-                                     GltfContainer container)
+                       GltfContainer container)
 {
     if (model::Check checked = checkWritable(path, mesh, colours); !checked)
         return checked;
@@ -222,7 +219,8 @@ model::Check writeGltf(const std::string& path, const LitMesh& mesh, const Displ
         const GltfParts parts = buildGltf(mesh, colours, "");
         const std::string bytes = glb(parts);
         if (bytes.size() > std::numeric_limits<uint32_t>::max())
-            return model::makeError("cannot write " + path + ": the model is larger than the 4 GiB a .glb file can hold");
+            return model::makeError("cannot write " + path +
+                                    ": the model is larger than the 4 GiB a .glb file can hold");
         return model::writeFileAtomically(path, bytes);
     }
 

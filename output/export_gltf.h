@@ -29,7 +29,7 @@ enum class GltfContainer {
 
 // Returns an error message naming the path, or nothing on success.
 model::Check writeGltf(const std::string& path, const LitMesh& mesh, const DisplayColours& colours,
-                                     GltfContainer container);
+                       GltfContainer container);
 
 // The buffer file that writeGltf(path, ..., Separate) writes beside `path`.
 std::string gltfBufferPath(const std::string& gltfPath);

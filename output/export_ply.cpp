@@ -16,10 +16,7 @@ void appendU32(std::string& out, uint32_t v)
         out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
 
-void appendFloat(std::string& out, float v)
-{
-    appendU32(out, std::bit_cast<uint32_t>(v));
-}
+void appendFloat(std::string& out, float v) { appendU32(out, std::bit_cast<uint32_t>(v)); }
 
 void appendVec3(std::string& out, const glm::vec3& v)
 {

@@ -10,8 +10,7 @@ namespace regio::output {
 
 // Refuses a malformed mesh, or colours that are not one per vertex, with a
 // message that names the file about to be written.
-inline model::Check checkWritable(const std::string& path, const LitMesh& mesh,
-                                                const DisplayColours& colours)
+inline model::Check checkWritable(const std::string& path, const LitMesh& mesh, const DisplayColours& colours)
 {
     if (model::Check problem = checkLitMesh(mesh); !problem)
         return model::makeError("cannot write " + path + ": " + problem.error().message);

@@ -13,17 +13,15 @@ namespace {
 // points; linear interpolation between them stays within 2/255 of the
 // 256-entry original.
 constexpr std::array<std::array<float, 3>, 33> kViridis{{
-    {0.2670f, 0.0049f, 0.3294f}, {0.2770f, 0.0502f, 0.3755f}, {0.2823f, 0.0946f, 0.4170f},
-    {0.2829f, 0.1354f, 0.4530f}, {0.2789f, 0.1749f, 0.4830f}, {0.2708f, 0.2133f, 0.5066f},
-    {0.2593f, 0.2507f, 0.5244f}, {0.2454f, 0.2867f, 0.5370f}, {0.2302f, 0.3213f, 0.5455f},
-    {0.2148f, 0.3545f, 0.5510f}, {0.2000f, 0.3864f, 0.5545f}, {0.1861f, 0.4173f, 0.5567f},
-    {0.1733f, 0.4474f, 0.5579f}, {0.1613f, 0.4770f, 0.5581f}, {0.1497f, 0.5064f, 0.5573f},
-    {0.1384f, 0.5358f, 0.5551f}, {0.1281f, 0.5651f, 0.5509f}, {0.1209f, 0.5945f, 0.5442f},
-    {0.1203f, 0.6238f, 0.5343f}, {0.1310f, 0.6529f, 0.5208f}, {0.1554f, 0.6815f, 0.5032f},
-    {0.1930f, 0.7096f, 0.4812f}, {0.2415f, 0.7366f, 0.4545f}, {0.2986f, 0.7624f, 0.4230f},
-    {0.3629f, 0.7867f, 0.3866f}, {0.4330f, 0.8091f, 0.3453f}, {0.5081f, 0.8292f, 0.2992f},
-    {0.5873f, 0.8470f, 0.2489f}, {0.6694f, 0.8622f, 0.1954f}, {0.7529f, 0.8751f, 0.1427f},
-    {0.8359f, 0.8861f, 0.1025f}, {0.9166f, 0.8961f, 0.1008f}, {0.9932f, 0.9062f, 0.1439f},
+    {0.2670f, 0.0049f, 0.3294f}, {0.2770f, 0.0502f, 0.3755f}, {0.2823f, 0.0946f, 0.4170f}, {0.2829f, 0.1354f, 0.4530f},
+    {0.2789f, 0.1749f, 0.4830f}, {0.2708f, 0.2133f, 0.5066f}, {0.2593f, 0.2507f, 0.5244f}, {0.2454f, 0.2867f, 0.5370f},
+    {0.2302f, 0.3213f, 0.5455f}, {0.2148f, 0.3545f, 0.5510f}, {0.2000f, 0.3864f, 0.5545f}, {0.1861f, 0.4173f, 0.5567f},
+    {0.1733f, 0.4474f, 0.5579f}, {0.1613f, 0.4770f, 0.5581f}, {0.1497f, 0.5064f, 0.5573f}, {0.1384f, 0.5358f, 0.5551f},
+    {0.1281f, 0.5651f, 0.5509f}, {0.1209f, 0.5945f, 0.5442f}, {0.1203f, 0.6238f, 0.5343f}, {0.1310f, 0.6529f, 0.5208f},
+    {0.1554f, 0.6815f, 0.5032f}, {0.1930f, 0.7096f, 0.4812f}, {0.2415f, 0.7366f, 0.4545f}, {0.2986f, 0.7624f, 0.4230f},
+    {0.3629f, 0.7867f, 0.3866f}, {0.4330f, 0.8091f, 0.3453f}, {0.5081f, 0.8292f, 0.2992f}, {0.5873f, 0.8470f, 0.2489f},
+    {0.6694f, 0.8622f, 0.1954f}, {0.7529f, 0.8751f, 0.1427f}, {0.8359f, 0.8861f, 0.1025f}, {0.9166f, 0.8961f, 0.1008f},
+    {0.9932f, 0.9062f, 0.1439f},
 }};
 
 // Default depth of an automatic logarithmic range: three decades show the
@@ -165,10 +163,10 @@ DisplayColours falseColours(const LitMesh& mesh, const FalseColour& falseColour,
 {
     DisplayColours out;
     out.encoding = encoding;
-    out.description = std::string("false colour of luminance, ")
-                      + (falseColour.scale() == FalseColourScale::Logarithmic ? "logarithmic" : "linear")
-                      + " scale, " + formatTick(falseColour.minimum()) + " to " + formatTick(falseColour.maximum())
-                      + " W/m^2, viridis ramp, " + encoding.describe();
+    out.description = std::string("false colour of luminance, ") +
+                      (falseColour.scale() == FalseColourScale::Logarithmic ? "logarithmic" : "linear") + " scale, " +
+                      formatTick(falseColour.minimum()) + " to " + formatTick(falseColour.maximum()) +
+                      " W/m^2, viridis ramp, " + encoding.describe();
     out.linear.reserve(mesh.vertexCount());
     for (size_t v = 0; v < mesh.vertexCount(); ++v)
         out.linear.push_back(encoding.decode(falseColour.colour(displayLuminance(mesh.displayRadiosity(v, ambient)))));

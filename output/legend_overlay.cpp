@@ -54,10 +54,7 @@ int textWidth(const std::string& text, int scale)
     return stb_easy_font_width(const_cast<char*>(text.c_str())) * scale;
 }
 
-int textHeight(int scale)
-{
-    return stb_easy_font_height(const_cast<char*>("0")) * scale;
-}
+int textHeight(int scale) { return stb_easy_font_height(const_cast<char*>("0")) * scale; }
 
 // stb_easy_font turns text into axis-aligned quads; draw them scaled.
 void drawText(Image& image, int x, int y, const std::string& text, int scale, const Colour& colour)

@@ -14,10 +14,7 @@ using solver::SolutionMesh;
 
 namespace {
 
-bool finite(const glm::vec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 glm::vec3 toFloat(const Vec3& v)
 {
@@ -83,8 +80,8 @@ model::Check checkLitMesh(const LitMesh& mesh)
             return model::makeError("lit mesh: face index " + std::to_string(f) + " out of range");
     }
     for (size_t v = 0; v < n; ++v) {
-        if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) || !finite(mesh.radiosity[v])
-            || !finite(mesh.reflectance[v]))
+        if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) || !finite(mesh.radiosity[v]) ||
+            !finite(mesh.reflectance[v]))
             return model::makeError("lit mesh: vertex " + std::to_string(v) + " has a value that is not finite");
     }
     return model::success();
@@ -108,9 +105,8 @@ LitBounds litMeshBounds(const LitMesh& mesh)
 LitMesh litMeshFromSolution(const PreparedScene& scene, const std::vector<Rgb>& elementRadiosity)
 {
     if (elementRadiosity.size() != scene.elements.size())
-        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(elementRadiosity.size())
-                                    + " radiosity values for " + std::to_string(scene.elements.size())
-                                    + " elements");
+        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(elementRadiosity.size()) +
+                                    " radiosity values for " + std::to_string(scene.elements.size()) + " elements");
     FlatBuilder b;
     b.reserve(scene.elements.size());
     for (const InputFace& f : scene.faces)
@@ -132,9 +128,8 @@ LitMesh litMeshFromSolution(const SolutionSnapshot& snapshot)
         return {};
     const SolutionMesh& m = *snapshot.mesh;
     if (snapshot.radiosity.size() != m.triangles.size())
-        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(snapshot.radiosity.size())
-                                    + " radiosity values for " + std::to_string(m.triangles.size())
-                                    + " elements");
+        throw std::invalid_argument("litMeshFromSolution: " + std::to_string(snapshot.radiosity.size()) +
+                                    " radiosity values for " + std::to_string(m.triangles.size()) + " elements");
     FlatBuilder b;
     b.reserve(m.triangles.size());
     b.mesh.faceIds = m.faceIds;

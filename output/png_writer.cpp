@@ -18,11 +18,11 @@ void appendBytes(void* context, void* data, int size)
 std::string encodePng(const Image& image)
 {
     std::string bytes;
-    if (image.width <= 0 || image.height <= 0
-        || image.rgb.size() != static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3)
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgb.size() != static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3)
         return bytes;
-    const int ok = stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data(),
-                                          image.width * 3);
+    const int ok =
+        stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data(), image.width * 3);
     if (ok == 0)
         bytes.clear();
     return bytes;

@@ -42,11 +42,11 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     // no node (should be none).
     report["pieces"] = prepared.stats.pieces;
     report["lostPieces"] = prepared.stats.lostPieces;
-    report["seconds"] = {{"preprocess", stats.preprocessSeconds},
-                         {"shoot", stats.shootSeconds},
-                         {"adaptive", stats.adaptiveSeconds},
-                         {"total", totalSeconds.value_or(stats.preprocessSeconds + stats.shootSeconds
-                                                         + stats.adaptiveSeconds)}};
+    report["seconds"] = {
+        {"preprocess", stats.preprocessSeconds},
+        {"shoot", stats.shootSeconds},
+        {"adaptive", stats.adaptiveSeconds},
+        {"total", totalSeconds.value_or(stats.preprocessSeconds + stats.shootSeconds + stats.adaptiveSeconds)}};
     report["energy"] = {{"emitted", rgbJson(stats.energy.emitted)},
                         {"absorbed", rgbJson(stats.energy.absorbed)},
                         {"unshot", rgbJson(stats.energy.unshot)},

@@ -152,9 +152,9 @@ void rasterise(Target& target, ScreenVertex v0, ScreenVertex v1, ScreenVertex v2
                 continue;
             target.invDepth[i] = static_cast<float>(invZ);
             // Perspective-correct: colour/z is affine in the image, so is 1/z.
-            const glm::vec3 c = (v0.colourOverZ * static_cast<float>(l0) + v1.colourOverZ * static_cast<float>(l1)
-                                 + v2.colourOverZ * static_cast<float>(l2))
-                                / static_cast<float>(invZ);
+            const glm::vec3 c = (v0.colourOverZ * static_cast<float>(l0) + v1.colourOverZ * static_cast<float>(l1) +
+                                 v2.colourOverZ * static_cast<float>(l2)) /
+                                static_cast<float>(invZ);
             target.colour[i] = glm::max(c, glm::vec3(0.0f));
         }
     }
@@ -194,8 +194,8 @@ model::Camera frameCamera(const LitBounds& bounds, double fovY, double aspect)
     return camera;
 }
 
-std::optional<glm::dvec3> projectToImage(const model::Camera& camera, int width, int height,
-                                         const glm::dvec3& point, double nearPlane)
+std::optional<glm::dvec3> projectToImage(const model::Camera& camera, int width, int height, const glm::dvec3& point,
+                                         double nearPlane)
 {
     const auto view = makeView(camera, width, height);
     if (!view)

@@ -31,7 +31,12 @@ struct Image {
     std::vector<uint8_t> rgb; // 3 bytes per pixel, rows top to bottom
 
     Image() = default;
-    Image(int w, int h) : width(w), height(h), rgb(static_cast<size_t>(w) * static_cast<size_t>(h) * 3, 0) {}
+    Image(int w, int h)
+        : width(w)
+        , height(h)
+        , rgb(static_cast<size_t>(w) * static_cast<size_t>(h) * 3, 0)
+    {
+    }
     std::array<uint8_t, 3> pixel(int x, int y) const
     {
         const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 3;
@@ -49,10 +54,10 @@ struct Image {
 struct RenderOptions {
     int width = 1024;
     int height = 768;
-    int supersample = 2;                     // samples per pixel along each axis (1 = none)
+    int supersample = 2;                       // samples per pixel along each axis (1 = none)
     glm::vec3 background{0.12f, 0.12f, 0.14f}; // display-encoded
-    glm::vec3 backFace{0.0f};                // linear display colour of surfaces seen from behind
-    double nearPlane = 1e-3;                 // metres in front of the eye
+    glm::vec3 backFace{0.0f};                  // linear display colour of surfaces seen from behind
+    double nearPlane = 1e-3;                   // metres in front of the eye
 };
 
 // Why a camera cannot take a picture (eye on the target, up along the view,
@@ -66,8 +71,8 @@ model::Camera frameCamera(const LitBounds& bounds, double fovY = 45.0, double as
 // Where a world point lands: image x, y (pixel units, as described above) and
 // its distance in front of the eye along the view direction; empty when it is
 // not in front of the near plane. The projection renderImage uses.
-std::optional<glm::dvec3> projectToImage(const model::Camera& camera, int width, int height,
-                                         const glm::dvec3& point, double nearPlane = 1e-3);
+std::optional<glm::dvec3> projectToImage(const model::Camera& camera, int width, int height, const glm::dvec3& point,
+                                         double nearPlane = 1e-3);
 
 // Renders the mesh with per-vertex colours (colours.linear, encoded with
 // colours.encoding). A camera that checkCamera() refuses gives an image of

@@ -14,15 +14,9 @@ namespace {
 
 constexpr double kAutomaticWhiteFraction = 0.95;
 
-float srgbEncode(float c)
-{
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
+float srgbEncode(float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
-float srgbDecode(float c)
-{
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgbDecode(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 std::string formatNumber(double v)
 {
@@ -33,10 +27,7 @@ std::string formatNumber(double v)
 
 } // namespace
 
-float displayLuminance(const glm::vec3& c)
-{
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
+float displayLuminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 float DisplayEncoding::encode(float linear) const
 {
@@ -88,14 +79,14 @@ double automaticWhiteReference(const LitMesh& mesh, const glm::vec3& ambient)
     double totalArea = 0.0;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         const uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1], c = mesh.indices[3 * t + 2];
-        const double area = 0.5 * glm::length(glm::cross(mesh.positions[b] - mesh.positions[a],
-                                                         mesh.positions[c] - mesh.positions[a]));
+        const double area =
+            0.5 * glm::length(glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]));
         if (!(area > 0.0))
             continue;
-        const double lum = (displayLuminance(mesh.displayRadiosity(a, ambient))
-                            + displayLuminance(mesh.displayRadiosity(b, ambient))
-                            + displayLuminance(mesh.displayRadiosity(c, ambient)))
-                           / 3.0;
+        const double lum =
+            (displayLuminance(mesh.displayRadiosity(a, ambient)) + displayLuminance(mesh.displayRadiosity(b, ambient)) +
+             displayLuminance(mesh.displayRadiosity(c, ambient))) /
+            3.0;
         samples.emplace_back(lum, area);
         totalArea += area;
     }
@@ -128,8 +119,8 @@ ToneMap::ToneMap(const ToneMapSettings& settings, double whiteReference)
 
 ToneMap ToneMap::forMesh(const ToneMapSettings& settings, const LitMesh& mesh)
 {
-    const double white = settings.whiteReference ? *settings.whiteReference
-                                                 : automaticWhiteReference(mesh, settings.ambient);
+    const double white =
+        settings.whiteReference ? *settings.whiteReference : automaticWhiteReference(mesh, settings.ambient);
     return ToneMap(settings, white);
 }
 
@@ -143,12 +134,12 @@ glm::vec3 ToneMap::linear(const glm::vec3& radiosity) const
 
 std::string ToneMap::describe() const
 {
-    std::string s = "exposure " + formatNumber(m_settings.exposure) + " stops, white " + formatNumber(m_white)
-                    + " W/m^2" + (m_settings.whiteReference ? "" : " (automatic)") + ", "
-                    + m_settings.encoding.describe();
+    std::string s = "exposure " + formatNumber(m_settings.exposure) + " stops, white " + formatNumber(m_white) +
+                    " W/m^2" + (m_settings.whiteReference ? "" : " (automatic)") + ", " +
+                    m_settings.encoding.describe();
     if (m_settings.ambient != glm::vec3(0.0f))
-        s += ", ambient " + formatNumber(m_settings.ambient.x) + " " + formatNumber(m_settings.ambient.y) + " "
-             + formatNumber(m_settings.ambient.z) + " W/m^2";
+        s += ", ambient " + formatNumber(m_settings.ambient.x) + " " + formatNumber(m_settings.ambient.y) + " " +
+             formatNumber(m_settings.ambient.z) + " W/m^2";
     return s;
 }
 

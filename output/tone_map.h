@@ -48,8 +48,8 @@ struct ToneMapSettings {
     double exposure = 0.0;                // stops: +1 doubles every displayed value
     std::optional<double> whiteReference; // W/m^2 shown as white at exposure 0; empty = automatic
     DisplayEncoding encoding;
-    bool clamp = true;                    // clip linear values to [0,1]; off keeps highlights above 1
-    glm::vec3 ambient{0.0f};              // ambient term (W/m^2) added as reflectance x ambient
+    bool clamp = true;       // clip linear values to [0,1]; off keeps highlights above 1
+    glm::vec3 ambient{0.0f}; // ambient term (W/m^2) added as reflectance x ambient
 };
 
 // The luminance that an area-weighted 95 % of the surface does not exceed:

@@ -39,8 +39,8 @@ struct GroupKey {
 
     bool matches(const Properties& p) const
     {
-        return glm::dot(plane.normal, p.plane.normal) > 1.0 - 1e-9 && std::abs(plane.d - p.plane.d) <= 1e-7
-            && near(reflectance, p.reflectance, 1e-12) && near(emission, p.emission, 1e-12);
+        return glm::dot(plane.normal, p.plane.normal) > 1.0 - 1e-9 && std::abs(plane.d - p.plane.d) <= 1e-7 &&
+               near(reflectance, p.reflectance, 1e-12) && near(emission, p.emission, 1e-12);
     }
 };
 
@@ -87,7 +87,10 @@ struct CellHash {
 // point, so everything within one cell size of it is found.
 class PointGrid {
 public:
-    explicit PointGrid(double cell) : m_cell(cell) {}
+    explicit PointGrid(double cell)
+        : m_cell(cell)
+    {
+    }
 
     std::array<int64_t, 3> cellOf(const Vec3& p) const
     {
@@ -188,8 +191,9 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
             corners[k][static_cast<size_t>(c)] = found;
         }
         for (int c = 0; c < 3; ++c)
-            edgeLengthSum += glm::length(scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>((c + 1) % 3)])]
-                                         - scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>(c)])]);
+            edgeLengthSum +=
+                glm::length(scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>((c + 1) % 3)])] -
+                            scene.vertices[static_cast<size_t>(el.vertices[static_cast<size_t>(c)])]);
     }
 
     // Directed edges; an edge whose reverse exists is conforming and holds
@@ -277,7 +281,8 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
             triangles.push_back({outlines[k][0], outlines[k][1], outlines[k][2]});
         else
             triangulateConvex(outlines[k], positions, key.plane.normal, triangles);
-        const int face = scene.properties[static_cast<size_t>(scene.elements[static_cast<size_t>(elements[k])].properties)].face;
+        const int face =
+            scene.properties[static_cast<size_t>(scene.elements[static_cast<size_t>(elements[k])].properties)].face;
         triangleFace.resize(triangles.size(), face);
     }
 
@@ -351,9 +356,8 @@ LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRa
                       const SmoothingOptions& options)
 {
     if (elementRadiosity.size() != scene.elements.size())
-        throw std::invalid_argument("smoothLitMesh: " + std::to_string(elementRadiosity.size())
-                                    + " radiosity values for " + std::to_string(scene.elements.size())
-                                    + " elements");
+        throw std::invalid_argument("smoothLitMesh: " + std::to_string(elementRadiosity.size()) +
+                                    " radiosity values for " + std::to_string(scene.elements.size()) + " elements");
     LitMesh mesh;
     for (const InputFace& f : scene.faces)
         mesh.faceIds.push_back(f.id);

@@ -21,8 +21,8 @@ const char* stopReasonName(StopReason reason);
 struct SolverStats {
     int iterations = 0;
     int patches = 0;
-    int elements = 0;        // active elements the shooter works on
-    int adaptiveRounds = 0;  // §5.7 refinement rounds that split elements
+    int elements = 0;       // active elements the shooter works on
+    int adaptiveRounds = 0; // §5.7 refinement rounds that split elements
     EnergyBalance energy;
     Rgb ambient{0.0};
     double unshotRatio = 0.0; // largest unshot / emitted over the emitting channels
@@ -34,7 +34,7 @@ struct SolverStats {
 
 // The element mesh, shared between snapshots until the mesh changes.
 struct SolutionMesh {
-    int revision = 0;                          // changes whenever the mesh does
+    int revision = 0; // changes whenever the mesh does
     std::vector<Vec3> vertices;
     std::vector<std::array<int, 3>> triangles; // per element, CCW from its normal
     std::vector<Vec3> normals;                 // per element
@@ -63,7 +63,7 @@ struct SolutionSnapshot {
 };
 
 struct FaceResult {
-    std::string id;  // face id of the file
+    std::string id; // face id of the file
     double area = 0.0;
     Rgb radiosity{0.0}; // area-weighted mean over the face's elements
 };

@@ -9,10 +9,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::shared_ptr<SolutionMesh> makeMesh(const PreparedScene& prepared, int revision)
 {
@@ -57,8 +54,7 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     if (model::Check runnable = checkRunnable(s); !runnable)
         return runnable.error();
 
-    model::Result<PreparedScene> prepared =
-        prepareScene(scene, prepareOptionsFor(s, options.autoRegionPatchThreshold));
+    model::Result<PreparedScene> prepared = prepareScene(scene, prepareOptionsFor(s, options.autoRegionPatchThreshold));
     if (!prepared)
         return model::Result<std::unique_ptr<Solver>>::failureOf(prepared);
 

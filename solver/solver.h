@@ -85,7 +85,7 @@ private:
     void noteShot();
 
     std::unique_ptr<AdaptiveRefinement> m_refinement; // empty when adaptive subdivision is off
-    bool m_handOverPending = false; // a round split elements; the shooter has not got them yet
+    bool m_handOverPending = false;                   // a round split elements; the shooter has not got them yet
 
     model::SolverSettings m_settings;
     PreparedScene m_prepared;

@@ -29,7 +29,9 @@ QString sibling(const QString& scenePath, const QString& suffix)
 } // namespace
 
 Autosave::Autosave(SceneDocument* document, const QString& directory, QObject* parent)
-    : QObject(parent), m_document(document), m_directory(directory.isEmpty() ? defaultDirectory() : directory)
+    : QObject(parent)
+    , m_document(document)
+    , m_directory(directory.isEmpty() ? defaultDirectory() : directory)
 {
     QDir().mkpath(m_directory);
     const QString id = QUuid::createUuid().toString(QUuid::WithoutBraces);

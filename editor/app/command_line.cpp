@@ -22,9 +22,8 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
 {
     CommandLineOptions options;
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QCoreApplication::translate("regio::editor::CommandLine",
-                                    "Regio: an editor for radiosity scenes with regions and BSP orders."));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "regio::editor::CommandLine", "Regio: an editor for radiosity scenes with regions and BSP orders."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     const QCommandLineOption screenshot(
@@ -38,8 +37,7 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         QStringLiteral("WxH"));
     const QCommandLineOption language(
         QStringLiteral("lang"),
-        QCoreApplication::translate("regio::editor::CommandLine",
-                                    "User interface language for this run (en, cs)."),
+        QCoreApplication::translate("regio::editor::CommandLine", "User interface language for this run (en, cs)."),
         QStringLiteral("code"));
     const QCommandLineOption previewIterations(
         QStringLiteral("preview-iterations"),
@@ -75,9 +73,9 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
         options.ok = false;
-        options.error = QCoreApplication::translate("regio::editor::CommandLine",
-                                                    "only one scene file can be opened, got %1")
-                            .arg(positional.size());
+        options.error =
+            QCoreApplication::translate("regio::editor::CommandLine", "only one scene file can be opened, got %1")
+                .arg(positional.size());
         return options;
     }
     if (!positional.isEmpty())
@@ -85,17 +83,15 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
     options.screenshotPath = parser.value(screenshot);
     if (parser.isSet(screenshot) && options.screenshotPath.isEmpty()) {
         options.ok = false;
-        options.error = QCoreApplication::translate("regio::editor::CommandLine",
-                                                    "--screenshot needs a file name");
+        options.error = QCoreApplication::translate("regio::editor::CommandLine", "--screenshot needs a file name");
         return options;
     }
     if (parser.isSet(size)) {
         options.size = parseSize(parser.value(size));
         if (!options.size.isValid()) {
             options.ok = false;
-            options.error = QCoreApplication::translate(
-                                "regio::editor::CommandLine",
-                                "--size wants WIDTHxHEIGHT in pixels (64 to 16384), got \"%1\"")
+            options.error = QCoreApplication::translate("regio::editor::CommandLine",
+                                                        "--size wants WIDTHxHEIGHT in pixels (64 to 16384), got \"%1\"")
                                 .arg(parser.value(size));
             return options;
         }
@@ -113,8 +109,8 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         }
         if (options.screenshotPath.isEmpty()) {
             options.ok = false;
-            options.error = QCoreApplication::translate("regio::editor::CommandLine",
-                                                        "--preview-iterations needs --screenshot");
+            options.error =
+                QCoreApplication::translate("regio::editor::CommandLine", "--preview-iterations needs --screenshot");
             return options;
         }
         options.previewIterations = n;

@@ -7,15 +7,15 @@
 namespace regio::editor {
 
 struct CommandLineOptions {
-    QString scenePath;       // empty: start with a new scene
-    QString screenshotPath;  // non-empty: grab the window to this file and exit
-    QSize size;              // window size; invalid = the saved or default size
-    QString language;        // --lang: overrides the preference for this run
+    QString scenePath;          // empty: start with a new scene
+    QString screenshotPath;     // non-empty: grab the window to this file and exit
+    QSize size;                 // window size; invalid = the saved or default size
+    QString language;           // --lang: overrides the preference for this run
     int previewIterations = -1; // --preview-iterations: shoot N times before the screenshot (-1 = no preview)
-    bool ok = true;          // false: `error` says why, exit 2
+    bool ok = true;             // false: `error` says why, exit 2
     QString error;
-    bool exitNow = false;    // --help or --version was answered
-    QString message;         // what to print for --help / --version
+    bool exitNow = false; // --help or --version was answered
+    QString message;      // what to print for --help / --version
 };
 
 CommandLineOptions parseCommandLine(const QStringList& arguments);

@@ -10,8 +10,8 @@
 
 namespace regio::editor {
 
-DiagnosticsDialog::DiagnosticsDialog(const QString& title, const QString& text,
-                                     const model::Diagnostics& diagnostics, QWidget* parent)
+DiagnosticsDialog::DiagnosticsDialog(const QString& title, const QString& text, const model::Diagnostics& diagnostics,
+                                     QWidget* parent)
     : QDialog(parent)
 {
     setWindowTitle(title);

@@ -2,9 +2,9 @@
 #include "editor/app/command_line.h"
 #include "editor/app/main_window.h"
 #include "editor/app/preferences.h"
-#include "editor/preview/preview_screenshot.h"
 #include "editor/app/screenshot.h"
 #include "editor/app/translations.h"
+#include "editor/preview/preview_screenshot.h"
 #include "editor/viewport/viewport.h"
 
 #include <QApplication>
@@ -19,10 +19,7 @@ using namespace regio::editor;
 
 namespace {
 
-void printError(const QString& message)
-{
-    std::fprintf(stderr, "regio: %s\n", qPrintable(message));
-}
+void printError(const QString& message) { std::fprintf(stderr, "regio: %s\n", qPrintable(message)); }
 
 int runScreenshot(const CommandLineOptions& options)
 {

@@ -1,22 +1,22 @@
 #include "editor/app/main_window.h"
 
-#include "editor/objects/authoring.h"
 #include "editor/app/autosave.h"
+#include "editor/app/diagnostics_dialog.h"
+#include "editor/app/preferences_dialog.h"
+#include "editor/app/recent_files.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/bsp_order_dock.h"
-#include "editor/app/diagnostics_dialog.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
-#include "editor/app/preferences_dialog.h"
+#include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/solver_dock.h"
-#include "editor/document/qt_conversions.h"
-#include "editor/app/recent_files.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 
 #include <QApplication>
@@ -37,7 +37,9 @@
 namespace regio::editor {
 
 MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
-    : QMainWindow(parent), m_options(options), m_document(new SceneDocument(this))
+    : QMainWindow(parent)
+    , m_options(options)
+    , m_document(new SceneDocument(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
     if (m_options.persistent) {
@@ -129,7 +131,8 @@ void MainWindow::createDocks()
     addDockWidget(Qt::RightDockWidgetArea, m_bsp->dock());
     tabifyDockWidget(m_materials, m_bsp->dock());
     m_materials->raise();
-    connect(m_bsp, &BspAuthoring::statusMessage, this, [this](const QString& message) { statusBar()->showMessage(message, 5000); });
+    connect(m_bsp, &BspAuthoring::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 5000); });
 
     m_historyDock = new QDockWidget(tr("History"), this);
     m_historyDock->setObjectName(QStringLiteral("HistoryDock"));
@@ -255,10 +258,10 @@ bool MainWindow::maybeSave()
         return true;
     if (!m_options.interactive)
         return false;
-    const auto answer = QMessageBox::warning(
-        this, tr("Unsaved changes"),
-        tr("The scene \"%1\" has unsaved changes. Save them?").arg(m_document->displayName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    const auto answer =
+        QMessageBox::warning(this, tr("Unsaved changes"),
+                             tr("The scene \"%1\" has unsaved changes. Save them?").arg(m_document->displayName()),
+                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();
     return answer == QMessageBox::Discard;
@@ -277,8 +280,8 @@ void MainWindow::open()
     if (!maybeSave())
         return;
     const QString dir = m_document->filePath().isEmpty() ? QString() : QFileInfo(m_document->filePath()).path();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), dir,
-                                                      tr("Regio scenes (*.json);;All files (*)"));
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Scene"), dir, tr("Regio scenes (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -343,10 +346,9 @@ bool MainWindow::save()
 
 bool MainWindow::saveAs()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"),
-                                                m_document->filePath().isEmpty() ? tr("untitled.json")
-                                                                                 : m_document->filePath(),
-                                                tr("Regio scenes (*.json)"));
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Scene As"), m_document->filePath().isEmpty() ? tr("untitled.json") : m_document->filePath(),
+        tr("Regio scenes (*.json)"));
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
@@ -417,8 +419,8 @@ void MainWindow::offerRecovery()
         return;
     const QList<RecoveryFile> orphans = Autosave::findOrphans();
     for (const RecoveryFile& file : orphans) {
-        const QString original = file.originalPath.isEmpty() ? tr("an unsaved scene")
-                                                             : QDir::toNativeSeparators(file.originalPath);
+        const QString original =
+            file.originalPath.isEmpty() ? tr("an unsaved scene") : QDir::toNativeSeparators(file.originalPath);
         QMessageBox box(QMessageBox::Question, tr("Recover Scene"),
                         tr("Regio did not shut down cleanly. Changes to %1 were autosaved on %2.")
                             .arg(original, QLocale().toString(QDateTime::fromMSecsSinceEpoch(file.savedAtMs),

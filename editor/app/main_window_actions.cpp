@@ -1,14 +1,14 @@
 // MainWindow's actions, menus and toolbars.
-#include "editor/objects/authoring.h"
+#include "editor/app/main_window.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
-#include "editor/preview/preview_controller.h"
 #include "editor/docks/scene_tree_dock.h"
-#include "editor/app/main_window.h"
-#include "editor/regions/region_authoring.h"
 #include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
+#include "editor/preview/preview_controller.h"
+#include "editor/regions/region_authoring.h"
 #include "editor/viewport/viewport.h"
 
 #include <QActionGroup>
@@ -23,8 +23,7 @@ namespace regio::editor {
 
 namespace {
 
-QAction* makeAction(QObject* parent, const QString& text, const QKeySequence& shortcut = {},
-                    const QString& tip = {})
+QAction* makeAction(QObject* parent, const QString& text, const QKeySequence& shortcut = {}, const QString& tip = {})
 {
     auto* action = new QAction(text, parent);
     if (!shortcut.isEmpty())
@@ -143,11 +142,14 @@ void MainWindow::createActions()
     };
     const ViewEntry views[] = {
         {tr("&Front"), StandardView::Front, QKeySequence(Qt::KeypadModifier | Qt::Key_1)},
-        {tr("&Back"), StandardView::Back, QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_1))},
+        {tr("&Back"), StandardView::Back,
+         QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_1))},
         {tr("&Right"), StandardView::Right, QKeySequence(Qt::KeypadModifier | Qt::Key_3)},
-        {tr("&Left"), StandardView::Left, QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_3))},
+        {tr("&Left"), StandardView::Left,
+         QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_3))},
         {tr("&Top"), StandardView::Top, QKeySequence(Qt::KeypadModifier | Qt::Key_7)},
-        {tr("Botto&m"), StandardView::Bottom, QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_7))},
+        {tr("Botto&m"), StandardView::Bottom,
+         QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_7))},
         {tr("&Isometric"), StandardView::Iso, QKeySequence(Qt::KeypadModifier | Qt::Key_0)},
     };
     for (const ViewEntry& entry : views) {
@@ -168,8 +170,8 @@ void MainWindow::createActions()
     connect(a.aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
 
     // The viewport's keys (F, 1-3, W/E/R) must not fire while typing in a dock.
-    for (QAction* action : {a.frameSelection, a.pickObjects, a.pickParts, a.pickFaces, a.gizmoMove,
-                            a.gizmoRotate, a.gizmoScale}) {
+    for (QAction* action :
+         {a.frameSelection, a.pickObjects, a.pickParts, a.pickFaces, a.gizmoMove, a.gizmoRotate, a.gizmoScale}) {
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         m_viewport->addAction(action);
     }

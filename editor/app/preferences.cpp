@@ -11,7 +11,8 @@ Preferences Preferences::load(QSettings& settings)
     Preferences p;
     settings.beginGroup(QStringLiteral("preferences"));
     p.language = settings.value(QStringLiteral("language"), p.language).toString();
-    p.autosaveMinutes = std::clamp(settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt(), 0, 120);
+    p.autosaveMinutes =
+        std::clamp(settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt(), 0, 120);
     const double grid = settings.value(QStringLiteral("gridStep"), p.gridStep).toDouble();
     p.gridStep = grid > 0.0 && grid <= 100.0 ? grid : 0.1;
     p.snapToGrid = settings.value(QStringLiteral("snapToGrid"), p.snapToGrid).toBool();

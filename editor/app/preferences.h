@@ -8,9 +8,9 @@ class QSettings;
 namespace regio::editor {
 
 struct Preferences {
-    QString language;          // "" = follow the system locale; else "en", "cs", ...
-    int autosaveMinutes = 2;   // 0 = no autosave
-    double gridStep = 0.1;     // metres
+    QString language;        // "" = follow the system locale; else "en", "cs", ...
+    int autosaveMinutes = 2; // 0 = no autosave
+    double gridStep = 0.1;   // metres
     bool snapToGrid = true;
     double angleSnapDegrees = 15.0;
 

@@ -11,7 +11,8 @@
 
 namespace regio::editor {
 
-PreferencesDialog::PreferencesDialog(const Preferences& p, QWidget* parent) : QDialog(parent)
+PreferencesDialog::PreferencesDialog(const Preferences& p, QWidget* parent)
+    : QDialog(parent)
 {
     setWindowTitle(tr("Preferences"));
     auto* form = new QFormLayout(this);

@@ -9,7 +9,10 @@ class RecentFiles {
 public:
     static constexpr int kMaximum = 10;
 
-    explicit RecentFiles(QSettings& settings) : m_settings(settings) {}
+    explicit RecentFiles(QSettings& settings)
+        : m_settings(settings)
+    {
+    }
     QStringList files() const;
     // Moves `path` to the front (absolute, duplicates removed).
     void add(const QString& path);

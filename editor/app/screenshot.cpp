@@ -15,13 +15,14 @@
 namespace regio::editor {
 
 ScreenshotRunner::ScreenshotRunner(MainWindow* window, QString path, int timeoutMs, QObject* parent)
-    : QObject(parent), m_window(window), m_path(std::move(path))
+    : QObject(parent)
+    , m_window(window)
+    , m_path(std::move(path))
 {
     m_timeout.setSingleShot(true);
     m_timeout.setInterval(timeoutMs);
-    connect(&m_timeout, &QTimer::timeout, this, [this] {
-        finish(2, tr("no frame was rendered within %1 s").arg(m_timeout.interval() / 1000));
-    });
+    connect(&m_timeout, &QTimer::timeout, this,
+            [this] { finish(2, tr("no frame was rendered within %1 s").arg(m_timeout.interval() / 1000)); });
 }
 
 void ScreenshotRunner::start()

@@ -48,14 +48,16 @@ BspAnalysis analyseBsp(model::Scene sceneCopy)
     return out;
 }
 
-BspAnalyser::BspAnalyser(SceneDocument* document, QObject* parent) : QObject(parent), m_document(document)
+BspAnalyser::BspAnalyser(SceneDocument* document, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
 {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(150);
     connect(&m_debounce, &QTimer::timeout, this, &BspAnalyser::start);
     connect(&m_watcher, &QFutureWatcher<BspAnalysis>::finished, this, &BspAnalyser::onFinished);
-    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
-                        &SceneDocument::regionsChanged, &SceneDocument::sceneReset})
+    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged, &SceneDocument::regionsChanged,
+                        &SceneDocument::sceneReset})
         connect(document, signal, this, &BspAnalyser::onChanged);
     onChanged();
 }

@@ -47,11 +47,15 @@ double sceneSize(const solver::PreparedScene* prepared)
 } // namespace
 
 BspAuthoring::BspAuthoring(SceneDocument* document, Viewport* viewport, QWidget* dockParent)
-    : QObject(dockParent), m_document(document), m_viewport(viewport),
-      m_analyser(new BspAnalyser(document, this)), m_playback(new PainterPlayback(document, viewport, this))
+    : QObject(dockParent)
+    , m_document(document)
+    , m_viewport(viewport)
+    , m_analyser(new BspAnalyser(document, this))
+    , m_playback(new PainterPlayback(document, viewport, this))
 {
     m_suggestAction = new QAction(tr("&Suggest Order"), this);
-    m_suggestAction->setStatusTip(tr("Compute a low-split root order for the region and compare it with the current one"));
+    m_suggestAction->setStatusTip(
+        tr("Compute a low-split root order for the region and compare it with the current one"));
     connect(m_suggestAction, &QAction::triggered, this, &BspAuthoring::suggestOrder);
     m_applyAction = new QAction(tr("&Apply Suggested Order"), this);
     connect(m_applyAction, &QAction::triggered, this, &BspAuthoring::applySuggestion);
@@ -73,7 +77,8 @@ BspAuthoring::BspAuthoring(SceneDocument* document, Viewport* viewport, QWidget*
     m_insertSelectedAction = new QAction(tr("Insert &Selected Faces"), this);
     connect(m_insertSelectedAction, &QAction::triggered, this, &BspAuthoring::insertSelectedFaces);
     m_playPointAction = new QAction(tr("Painter Order from &Point…"), this);
-    m_playPointAction->setStatusTip(tr("Click a surface: the elements are painted in the solver's back-to-front order from there"));
+    m_playPointAction->setStatusTip(
+        tr("Click a surface: the elements are painted in the solver's back-to-front order from there"));
     connect(m_playPointAction, &QAction::triggered, this, [this] { startPlaybackPick(false); });
     m_playPatchAction = new QAction(tr("Painter Order from Pa&tch…"), this);
     m_playPatchAction->setStatusTip(tr("Click a surface: the patch there shoots, as in the solver"));
@@ -87,8 +92,8 @@ BspAuthoring::BspAuthoring(SceneDocument* document, Viewport* viewport, QWidget*
     connect(document, &SceneDocument::sceneReset, this, &BspAuthoring::onRegionsChanged);
     connect(document, &SceneDocument::selectionChanged, this, &BspAuthoring::onSelectionChanged);
     // A suggestion describes the scene it was computed on; any change drops it.
-    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
-                        &SceneDocument::regionsChanged, &SceneDocument::sceneReset})
+    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged, &SceneDocument::regionsChanged,
+                        &SceneDocument::sceneReset})
         connect(document, signal, this, [this] {
             if (m_suggestion)
                 discardSuggestion();
@@ -239,7 +244,8 @@ int BspAuthoring::insertSelectedFaces()
         return 0;
     }
     const std::string regionId = m_region;
-    m_document->beginMacro(tr("Add %n face(s) to the BSP order of %1", nullptr, int(faces.size())).arg(toQString(regionId)));
+    m_document->beginMacro(
+        tr("Add %n face(s) to the BSP order of %1", nullptr, int(faces.size())).arg(toQString(regionId)));
     for (const std::string& face : faces)
         m_document->push(new InsertBspEntry(m_document, regionId, face));
     return m_document->endMacro() ? int(faces.size()) : 0;
@@ -313,7 +319,8 @@ void BspAuthoring::updateFragmentLayer()
         m_viewport->removeLayer(fragmentLayerName());
         return;
     }
-    m_viewport->setLayer(fragmentLayerName(), buildFragmentLayer(*analysis.scene, *analysis.prepared, whole ? -1 : region));
+    m_viewport->setLayer(fragmentLayerName(),
+                         buildFragmentLayer(*analysis.scene, *analysis.prepared, whole ? -1 : region));
 }
 
 void BspAuthoring::setHighlightedNode(int node)

@@ -85,8 +85,8 @@ void addOutline(LineList& lines, std::span<const model::Vec3> loop, const glm::v
 
 } // namespace
 
-FragmentEdgeKind classifyFragmentEdge(const model::Scene& scene, const solver::PreparedScene& prepared,
-                                      int fragment, const model::Vec3& a, const model::Vec3& b)
+FragmentEdgeKind classifyFragmentEdge(const model::Scene& scene, const solver::PreparedScene& prepared, int fragment,
+                                      const model::Vec3& a, const model::Vec3& b)
 {
     const solver::Fragment& f = prepared.fragments[size_t(fragment)];
     const int face = prepared.properties[size_t(f.properties)].face;

@@ -5,8 +5,8 @@
 // (§5.6, Appendix A) as a colour ramp over the element triangles.
 #include "editor/viewport/viewport_layers.h"
 #include "model/scene.h"
-#include "solver/visibility/painter_order.h"
 #include "solver/prepare/prepared_scene.h"
+#include "solver/visibility/painter_order.h"
 
 #include <glm/vec4.hpp>
 
@@ -18,8 +18,8 @@ enum class FragmentEdgeKind { Boundary, RegionCut, BspSplit };
 // `scene` must be the scene `prepared` was built from: a fragment edge is a
 // boundary edge when it lies on its input face's outline, a region cut when
 // it lies on a separating plane of the regional tree, else a BSP split.
-FragmentEdgeKind classifyFragmentEdge(const model::Scene& scene, const solver::PreparedScene& prepared,
-                                      int fragment, const model::Vec3& a, const model::Vec3& b);
+FragmentEdgeKind classifyFragmentEdge(const model::Scene& scene, const solver::PreparedScene& prepared, int fragment,
+                                      const model::Vec3& a, const model::Vec3& b);
 
 struct FragmentEdgeCounts {
     int boundary = 0, regionCuts = 0, bspSplits = 0;

@@ -33,7 +33,9 @@ constexpr int kExpandedLevels = 3;
 } // namespace
 
 BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWidget* parent)
-    : QDockWidget(tr("BSP Order"), parent), m_authoring(authoring), m_document(document)
+    : QDockWidget(tr("BSP Order"), parent)
+    , m_authoring(authoring)
+    , m_document(document)
 {
     setObjectName(QStringLiteral("BspOrderDock"));
     auto* body = new QWidget(this);
@@ -78,8 +80,9 @@ BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWi
     m_figures->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_figures->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_figures->setSelectionMode(QAbstractItemView::NoSelection);
-    m_figures->setToolTip(tr("Fragments after region clipping and BSP splits, polygons split, longest root-to-leaf path; "
-                             "Single BSP is the whole scene as one tree without regions"));
+    m_figures->setToolTip(
+        tr("Fragments after region clipping and BSP splits, polygons split, longest root-to-leaf path; "
+           "Single BSP is the whole scene as one tree without regions"));
     m_figures->setMaximumHeight(m_figures->verticalHeader()->length() + m_figures->horizontalHeader()->height() + 6);
     orderLayout->addWidget(m_figures);
     m_figuresNote = new QLabel(orderPage);
@@ -87,7 +90,8 @@ BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWi
     orderLayout->addWidget(m_figuresNote);
     auto* suggestRow = new QHBoxLayout;
     m_suggest = new QPushButton(tr("Suggest Order"), orderPage);
-    m_suggest->setToolTip(tr("Greedy low-split, balanced root order (Thibault and Naylor), shown before it is applied"));
+    m_suggest->setToolTip(
+        tr("Greedy low-split, balanced root order (Thibault and Naylor), shown before it is applied"));
     m_apply = new QPushButton(tr("Apply"), orderPage);
     m_discard = new QPushButton(tr("Discard"), orderPage);
     for (QPushButton* b : {m_suggest, m_apply, m_discard})
@@ -107,7 +111,8 @@ BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWi
     m_tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     m_tree->header()->setStretchLastSection(false);
-    m_tree->setToolTip(tr("The region's BSP tree: each node's plane is its root face's; select a node to see its plane"));
+    m_tree->setToolTip(
+        tr("The region's BSP tree: each node's plane is its root face's; select a node to see its plane"));
     treeLayout->addWidget(m_tree, 1);
     m_treeNote = new QLabel(treePage);
     m_treeNote->setWordWrap(true);
@@ -249,9 +254,8 @@ void BspOrderDock::rebuildRegions()
     m_rebuilding = true;
     m_regions->clear();
     for (const model::Region& region : m_document->scene().regions) {
-        const QString label = region.name.empty()
-                                  ? toQString(region.id)
-                                  : tr("%1 (%2)").arg(toQString(region.name), toQString(region.id));
+        const QString label = region.name.empty() ? toQString(region.id)
+                                                  : tr("%1 (%2)").arg(toQString(region.name), toQString(region.id));
         m_regions->addItem(label, toQString(region.id));
     }
     m_regions->setCurrentIndex(m_regions->findData(toQString(m_authoring->currentRegion())));
@@ -339,7 +343,8 @@ void BspOrderDock::rebuildFigures()
                     depth = std::max(depth, r.figures.depth);
             setCell(FragmentsRow, SuggestedSceneColumn, analysis.authored->fragments - c.fragments + s.fragments,
                     s.fragments < c.fragments);
-            setCell(SplitsRow, SuggestedSceneColumn, analysis.authored->splits - c.splits + s.splits, s.splits < c.splits);
+            setCell(SplitsRow, SuggestedSceneColumn, analysis.authored->splits - c.splits + s.splits,
+                    s.splits < c.splits);
             setCell(DepthRow, SuggestedSceneColumn, depth, depth < analysis.authored->maxDepth);
         }
     }
@@ -360,8 +365,9 @@ void BspOrderDock::rebuildFigures()
         note = tr("Computed by the solver's preparation in %1 ms").arg(QString::number(analysis.milliseconds, 'f', 0));
     }
     if (hasSuggestion)
-        note += QLatin1Char('\n') + tr("Suggested order: %n root face(s). Apply replaces the region's order (one undo step).",
-                                       nullptr, int(suggestion->order.size()));
+        note += QLatin1Char('\n') +
+                tr("Suggested order: %n root face(s). Apply replaces the region's order (one undo step).", nullptr,
+                   int(suggestion->order.size()));
     m_figuresNote->setText(note);
 }
 

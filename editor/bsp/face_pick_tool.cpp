@@ -15,7 +15,10 @@ constexpr int kClickSlopPixels = 4;
 
 FacePickTool::FacePickTool(const SceneDocument* document, PickHandler onPick, std::function<void()> onDeactivated,
                            bool once)
-    : m_document(document), m_onPick(std::move(onPick)), m_onDeactivated(std::move(onDeactivated)), m_once(once)
+    : m_document(document)
+    , m_onPick(std::move(onPick))
+    , m_onDeactivated(std::move(onDeactivated))
+    , m_once(once)
 {
 }
 

@@ -18,14 +18,15 @@ constexpr int kTickMilliseconds = 40;
 }
 
 PainterPlayback::PainterPlayback(SceneDocument* document, Viewport* viewport, QObject* parent)
-    : QObject(parent), m_document(document), m_viewport(viewport)
+    : QObject(parent)
+    , m_document(document)
+    , m_viewport(viewport)
 {
     m_timer.setInterval(kTickMilliseconds);
     connect(&m_timer, &QTimer::timeout, this, &PainterPlayback::advance);
     // Any change makes the order meaningless: the mesh it indexes is gone.
-    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
-                        &SceneDocument::regionsChanged, &SceneDocument::settingsChanged,
-                        &SceneDocument::materialsChanged, &SceneDocument::sceneReset})
+    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged, &SceneDocument::regionsChanged,
+                        &SceneDocument::settingsChanged, &SceneDocument::materialsChanged, &SceneDocument::sceneReset})
         connect(document, signal, this, [this] {
             m_preparedValid = false;
             m_prepared.reset();

@@ -6,8 +6,8 @@
 // solver::painterOrder on the scene prepared exactly as the solver prepares
 // it (the scene's patch size, elements per patch and regions mode), so the
 // sequence is the solver's traversal, element for element.
-#include "solver/visibility/painter_order.h"
 #include "solver/prepare/prepared_scene.h"
+#include "solver/visibility/painter_order.h"
 
 #include <QObject>
 #include <QPointer>

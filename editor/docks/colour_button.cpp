@@ -6,7 +6,8 @@
 
 namespace regio::editor {
 
-ColourButton::ColourButton(QWidget* parent) : QToolButton(parent)
+ColourButton::ColourButton(QWidget* parent)
+    : QToolButton(parent)
 {
     setToolTip(tr("Pick a colour"));
     connect(this, &QToolButton::clicked, this, &ColourButton::pick);

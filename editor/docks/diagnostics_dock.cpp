@@ -16,7 +16,9 @@ constexpr int kDebounceMs = 250;
 }
 
 DiagnosticsDock::DiagnosticsDock(SceneDocument* document, QWidget* parent)
-    : QDockWidget(tr("Diagnostics"), parent), m_document(document), m_model(new DiagnosticsModel(this))
+    : QDockWidget(tr("Diagnostics"), parent)
+    , m_document(document)
+    , m_model(new DiagnosticsModel(this))
 {
     setObjectName(QStringLiteral("DiagnosticsDock"));
     auto* body = new QWidget(this);
@@ -55,10 +57,9 @@ void DiagnosticsDock::validateNow()
     m_debounce.stop();
     m_model->setDiagnostics(model::validateScene(m_document->scene()));
     const int errors = m_model->errorCount(), warnings = m_model->warningCount();
-    m_summary->setText(errors + warnings == 0
-                           ? tr("The scene is valid.")
-                           : tr("%n error(s)", nullptr, errors) + QStringLiteral(", ") +
-                                 tr("%n warning(s)", nullptr, warnings));
+    m_summary->setText(errors + warnings == 0 ? tr("The scene is valid.")
+                                              : tr("%n error(s)", nullptr, errors) + QStringLiteral(", ") +
+                                                    tr("%n warning(s)", nullptr, warnings));
     emit problemCountChanged(errors, warnings);
 }
 

@@ -14,10 +14,9 @@ void DiagnosticsModel::setDiagnostics(model::Diagnostics diagnostics)
     beginResetModel();
     m_diagnostics = std::move(diagnostics);
     // Errors first, then by position in the file.
-    std::stable_sort(m_diagnostics.begin(), m_diagnostics.end(),
-                     [](const model::Diagnostic& a, const model::Diagnostic& b) {
-                         return a.isError() && !b.isError();
-                     });
+    std::stable_sort(
+        m_diagnostics.begin(), m_diagnostics.end(),
+        [](const model::Diagnostic& a, const model::Diagnostic& b) { return a.isError() && !b.isError(); });
     endResetModel();
 }
 
@@ -41,10 +40,7 @@ int DiagnosticsModel::rowCount(const QModelIndex& parent) const
     return parent.isValid() ? 0 : int(m_diagnostics.size());
 }
 
-int DiagnosticsModel::columnCount(const QModelIndex& parent) const
-{
-    return parent.isValid() ? 0 : ColumnCount;
-}
+int DiagnosticsModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
 QString DiagnosticsModel::locationText(const model::Diagnostic& d)
 {

@@ -1,11 +1,11 @@
 #include "editor/docks/materials_dock.h"
 
-#include "editor/objects/authoring.h"
-#include "editor/document/commands/material_commands.h"
 #include "editor/docks/colour_button.h"
 #include "editor/docks/vector_editor.h"
+#include "editor/document/commands/material_commands.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -33,7 +33,9 @@ QIcon swatchIcon(const model::Material& m)
 } // namespace
 
 MaterialsDock::MaterialsDock(SceneDocument* document, Authoring* authoring, QWidget* parent)
-    : QDockWidget(tr("Materials"), parent), m_document(document), m_authoring(authoring)
+    : QDockWidget(tr("Materials"), parent)
+    , m_document(document)
+    , m_authoring(authoring)
 {
     setObjectName(QStringLiteral("MaterialsDock"));
     auto* body = new QWidget(this);
@@ -178,9 +180,9 @@ void MaterialsDock::refreshEditors()
     m_editors->setEnabled(m != nullptr);
     m_remove->setEnabled(m != nullptr);
     const Selection& s = m_document->selection();
-    m_assign->setEnabled(m != nullptr && !s.empty() &&
-                         (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part ||
-                          s.kind == SelectionKind::Face));
+    m_assign->setEnabled(
+        m != nullptr && !s.empty() &&
+        (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part || s.kind == SelectionKind::Face));
     if (!m)
         return;
     m_refreshing = true;

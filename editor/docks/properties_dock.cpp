@@ -1,14 +1,14 @@
 #include "editor/docks/properties_dock.h"
 
-#include "editor/objects/authoring.h"
+#include "editor/docks/vector_editor.h"
 #include "editor/document/commands/material_commands.h"
 #include "editor/document/commands/object_commands.h"
 #include "editor/document/commands/part_commands.h"
 #include "editor/document/commands/region_commands.h"
 #include "editor/document/commands/solver_settings_commands.h"
-#include "editor/docks/vector_editor.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
 #include "editor/viewport/scene_mesh.h"
 
 #include <QCheckBox>
@@ -64,7 +64,9 @@ QLabel* infoLabel(QWidget* parent)
 } // namespace
 
 PropertiesDock::PropertiesDock(SceneDocument* document, Authoring* authoring, QWidget* parent)
-    : QDockWidget(tr("Properties"), parent), m_document(document), m_authoring(authoring)
+    : QDockWidget(tr("Properties"), parent)
+    , m_document(document)
+    , m_authoring(authoring)
 {
     setObjectName(QStringLiteral("PropertiesDock"));
     m_pages = new QStackedWidget(this);
@@ -79,9 +81,9 @@ PropertiesDock::PropertiesDock(SceneDocument* document, Authoring* authoring, QW
     scroll->setFrameShape(QFrame::NoFrame);
     setWidget(scroll);
 
-    for (auto signal : {&SceneDocument::selectionChanged, &SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
-                        &SceneDocument::materialsChanged, &SceneDocument::regionsChanged,
-                        &SceneDocument::settingsChanged, &SceneDocument::cameraChanged})
+    for (auto signal : {&SceneDocument::selectionChanged, &SceneDocument::objectsChanged,
+                        &SceneDocument::geometryChanged, &SceneDocument::materialsChanged,
+                        &SceneDocument::regionsChanged, &SceneDocument::settingsChanged, &SceneDocument::cameraChanged})
         connect(document, signal, this, &PropertiesDock::refresh);
     refresh();
 }
@@ -305,12 +307,27 @@ void PropertiesDock::refresh()
     m_refreshing = true;
     const Selection& s = m_document->selection();
     switch (s.kind) {
-    case SelectionKind::None: m_pages->setCurrentIndex(ScenePage); refreshScene(); break;
+    case SelectionKind::None:
+        m_pages->setCurrentIndex(ScenePage);
+        refreshScene();
+        break;
     case SelectionKind::Object:
-    case SelectionKind::Part: m_pages->setCurrentIndex(ElementPage); refreshElement(); break;
-    case SelectionKind::Face: m_pages->setCurrentIndex(FacePage); refreshFace(); break;
-    case SelectionKind::Material: m_pages->setCurrentIndex(MaterialPage); refreshMaterial(); break;
-    case SelectionKind::Region: m_pages->setCurrentIndex(RegionPage); refreshRegion(); break;
+    case SelectionKind::Part:
+        m_pages->setCurrentIndex(ElementPage);
+        refreshElement();
+        break;
+    case SelectionKind::Face:
+        m_pages->setCurrentIndex(FacePage);
+        refreshFace();
+        break;
+    case SelectionKind::Material:
+        m_pages->setCurrentIndex(MaterialPage);
+        refreshMaterial();
+        break;
+    case SelectionKind::Region:
+        m_pages->setCurrentIndex(RegionPage);
+        refreshRegion();
+        break;
     }
     m_refreshing = false;
 }
@@ -383,8 +400,8 @@ void PropertiesDock::refreshElement()
         vertices += int(part->vertices.size());
     }
     if (single)
-        m_elementTitle->setText((isObject ? tr("<b>Object</b> %1") : tr("<b>Part</b> %1"))
-                                    .arg(toQString(s.ids.front()).toHtmlEscaped()));
+        m_elementTitle->setText(
+            (isObject ? tr("<b>Object</b> %1") : tr("<b>Part</b> %1")).arg(toQString(s.ids.front()).toHtmlEscaped()));
     else
         m_elementTitle->setText(isObject ? tr("<b>%n objects</b>", nullptr, int(s.ids.size()))
                                          : tr("<b>%n parts</b>", nullptr, int(s.ids.size())));

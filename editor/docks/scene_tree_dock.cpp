@@ -1,9 +1,9 @@
 #include "editor/docks/scene_tree_dock.h"
 
-#include "editor/objects/authoring.h"
 #include "editor/docks/scene_tree_model.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
 
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -17,8 +17,11 @@
 namespace regio::editor {
 
 SceneTreeDock::SceneTreeDock(SceneDocument* document, Authoring* authoring, QWidget* parent)
-    : QDockWidget(tr("Scene"), parent), m_document(document), m_authoring(authoring),
-      m_model(new SceneTreeModel(this)), m_proxy(new QSortFilterProxyModel(this))
+    : QDockWidget(tr("Scene"), parent)
+    , m_document(document)
+    , m_authoring(authoring)
+    , m_model(new SceneTreeModel(this))
+    , m_proxy(new QSortFilterProxyModel(this))
 {
     setObjectName(QStringLiteral("SceneTreeDock"));
     auto* body = new QWidget(this);

@@ -15,10 +15,7 @@ const QString SceneTreeModel::kPartsMimeType = QStringLiteral("application/x-reg
 
 namespace {
 
-std::string nodeKey(SelectionKind kind, const std::string& id)
-{
-    return std::to_string(int(kind)) + ':' + id;
-}
+std::string nodeKey(SelectionKind kind, const std::string& id) { return std::to_string(int(kind)) + ':' + id; }
 
 QIcon swatch(const model::Material* material)
 {
@@ -44,7 +41,10 @@ QIcon swatch(const model::Material* material)
 
 } // namespace
 
-SceneTreeModel::SceneTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
+SceneTreeModel::SceneTreeModel(QObject* parent)
+    : QAbstractItemModel(parent)
+{
+}
 
 void SceneTreeModel::setScene(const model::Scene* scene)
 {
@@ -66,8 +66,8 @@ void SceneTreeModel::rebuild()
             const auto& parts = m_scene->objects[size_t(o)].parts;
             for (int p = 0; p < int(parts.size()); ++p) {
                 const int partNode = int(m_nodes.size());
-                m_nodes.push_back({SelectionKind::Part, o, p, -1, objectNode,
-                                   int(m_nodes[size_t(objectNode)].children.size()), {}});
+                m_nodes.push_back(
+                    {SelectionKind::Part, o, p, -1, objectNode, int(m_nodes[size_t(objectNode)].children.size()), {}});
                 m_nodes[size_t(objectNode)].children.push_back(partNode);
                 for (int f = 0; f < int(parts[size_t(p)].faces.size()); ++f) {
                     const int faceNode = int(m_nodes.size());
@@ -77,7 +77,8 @@ void SceneTreeModel::rebuild()
             }
         }
         for (int n = 0; n < int(m_nodes.size()); ++n)
-            m_nodeById.emplace(nodeKey(m_nodes[size_t(n)].kind, idAt(createIndex(m_nodes[size_t(n)].row, 0, quintptr(n)))), n);
+            m_nodeById.emplace(
+                nodeKey(m_nodes[size_t(n)].kind, idAt(createIndex(m_nodes[size_t(n)].row, 0, quintptr(n)))), n);
     }
     endResetModel();
 }
@@ -258,8 +259,7 @@ QMimeData* SceneTreeModel::mimeData(const QModelIndexList& indexes) const
     return data;
 }
 
-bool SceneTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int,
-                                     const QModelIndex& parent) const
+bool SceneTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction, int, int, const QModelIndex& parent) const
 {
     if (!data || !data->hasFormat(kPartsMimeType))
         return false;

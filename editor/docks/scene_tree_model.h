@@ -9,8 +9,8 @@
 #include <QAbstractItemModel>
 
 #include <functional>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace regio::editor {

@@ -6,8 +6,7 @@
 
 namespace regio::editor {
 
-VectorEditor::VectorEditor(QWidget* parent, double min, double max, int decimals, double step,
-                           const QString& suffix)
+VectorEditor::VectorEditor(QWidget* parent, double min, double max, int decimals, double step, const QString& suffix)
     : QWidget(parent)
 {
     auto* layout = new QHBoxLayout(this);
@@ -33,10 +32,7 @@ VectorEditor::VectorEditor(QWidget* parent, double min, double max, int decimals
     }
 }
 
-model::Vec3 VectorEditor::value() const
-{
-    return {m_boxes[0]->value(), m_boxes[1]->value(), m_boxes[2]->value()};
-}
+model::Vec3 VectorEditor::value() const { return {m_boxes[0]->value(), m_boxes[1]->value(), m_boxes[2]->value()}; }
 
 void VectorEditor::setValue(const model::Vec3& value)
 {

@@ -39,8 +39,7 @@ double srgbToLinear(double c)
 
 QColor linearToColor(const model::Rgb& rgb)
 {
-    return QColor::fromRgbF(float(linearToSrgb(rgb.r)), float(linearToSrgb(rgb.g)),
-                            float(linearToSrgb(rgb.b)));
+    return QColor::fromRgbF(float(linearToSrgb(rgb.r)), float(linearToSrgb(rgb.g)), float(linearToSrgb(rgb.b)));
 }
 
 model::Rgb colorToLinear(const QColor& colour)
@@ -56,10 +55,7 @@ QColor emissionDisplayColor(const model::Rgb& emission)
     return linearToColor(emission / peak);
 }
 
-QString formatNumber(double value, int precision)
-{
-    return QLocale().toString(value, 'g', precision);
-}
+QString formatNumber(double value, int precision) { return QLocale().toString(value, 'g', precision); }
 
 QString formatVector(const model::Vec3& v, int precision)
 {

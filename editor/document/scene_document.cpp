@@ -9,10 +9,11 @@
 
 namespace regio::editor {
 
-SceneDocument::SceneDocument(QObject* parent) : QObject(parent), m_undoStack(new QUndoStack(this))
+SceneDocument::SceneDocument(QObject* parent)
+    : QObject(parent)
+    , m_undoStack(new QUndoStack(this))
 {
-    connect(m_undoStack, &QUndoStack::cleanChanged, this,
-            [this](bool clean) { emit modifiedChanged(!clean); });
+    connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
 SceneDocument::~SceneDocument() = default;
@@ -22,10 +23,7 @@ QString SceneDocument::displayName() const
     return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
 }
 
-bool SceneDocument::isModified() const
-{
-    return !m_undoStack->isClean();
-}
+bool SceneDocument::isModified() const { return !m_undoStack->isClean(); }
 
 void SceneDocument::setSelection(Selection selection)
 {

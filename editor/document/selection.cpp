@@ -12,15 +12,9 @@ Selection Selection::of(SelectionKind kind, std::vector<std::string> ids)
     return Selection{kind, std::move(ids)};
 }
 
-Selection Selection::single(SelectionKind kind, const std::string& id)
-{
-    return of(kind, {id});
-}
+Selection Selection::single(SelectionKind kind, const std::string& id) { return of(kind, {id}); }
 
-bool Selection::contains(const std::string& id) const
-{
-    return std::find(ids.begin(), ids.end(), id) != ids.end();
-}
+bool Selection::contains(const std::string& id) const { return std::find(ids.begin(), ids.end(), id) != ids.end(); }
 
 Selection Selection::toggled(SelectionKind newKind, const std::string& id) const
 {
@@ -87,8 +81,7 @@ std::vector<std::string> selectedFaceIds(const model::Scene& scene, const Select
     for (const model::Object& object : scene.objects) {
         const bool wholeObject = selection.kind == SelectionKind::Object && wanted.count(object.id);
         for (const model::Part& part : object.parts) {
-            const bool wholePart =
-                wholeObject || (selection.kind == SelectionKind::Part && wanted.count(part.id));
+            const bool wholePart = wholeObject || (selection.kind == SelectionKind::Part && wanted.count(part.id));
             for (const model::Face& face : part.faces)
                 if (wholePart || (selection.kind == SelectionKind::Face && wanted.count(face.id)))
                     out.push_back(face.id);

@@ -1,9 +1,9 @@
 // Authoring: actions, menus and the interactive (dialog) entry points.
 #include "editor/objects/authoring.h"
 
-#include "editor/objects/primitive_dialog.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
+#include "editor/objects/primitive_dialog.h"
 #include "editor/viewport/viewport.h"
 
 #include <QAction>
@@ -20,8 +20,11 @@
 namespace regio::editor {
 
 Authoring::Authoring(SceneDocument* document, Viewport* viewport, QWidget* dialogParent, bool interactive)
-    : QObject(dialogParent), m_document(document), m_viewport(viewport), m_dialogParent(dialogParent),
-      m_interactive(interactive)
+    : QObject(dialogParent)
+    , m_document(document)
+    , m_viewport(viewport)
+    , m_dialogParent(dialogParent)
+    , m_interactive(interactive)
 {
     const std::pair<PrimitiveKind, QKeySequence> kinds[] = {
         {PrimitiveKind::Box, QKeySequence(Qt::SHIFT | Qt::Key_B)},
@@ -73,22 +76,21 @@ Authoring::Authoring(SceneDocument* document, Viewport* viewport, QWidget* dialo
     m_navigationHelp = new QAction(tr("&Navigation and Shortcuts"), this);
     m_navigationHelp->setShortcut(QKeySequence::HelpContents);
     connect(m_navigationHelp, &QAction::triggered, this, [this] {
-        QMessageBox::information(
-            m_dialogParent, tr("Navigation"),
-            tr("<table>"
-               "<tr><td><b>Middle drag</b> or <b>Alt+left drag</b></td><td>orbit</td></tr>"
-               "<tr><td><b>Shift+middle</b> or <b>Alt+Shift+left</b></td><td>pan</td></tr>"
-               "<tr><td><b>Wheel</b>, <b>Ctrl+middle</b>, pinch</td><td>zoom</td></tr>"
-               "<tr><td><b>Two-finger scroll</b></td><td>orbit (Shift: pan)</td></tr>"
-               "<tr><td><b>Right drag + W A S D Q E</b></td><td>fly (Shift: faster)</td></tr>"
-               "<tr><td><b>F</b> / <b>Home</b></td><td>frame selection / everything</td></tr>"
-               "<tr><td><b>Keypad 1 3 7</b> (Ctrl: opposite), <b>0</b>, <b>5</b></td>"
-               "<td>front, right, top, isometric, orthographic</td></tr>"
-               "<tr><td><b>1 2 3</b></td><td>select objects, parts, faces</td></tr>"
-               "<tr><td><b>W E R</b></td><td>move, rotate, scale gizmo</td></tr>"
-               "<tr><td><b>C</b></td><td>clip tool: click three points</td></tr>"
-               "<tr><td><b>Click</b>, <b>Ctrl+click</b></td><td>select, add or remove</td></tr>"
-               "</table>"));
+        QMessageBox::information(m_dialogParent, tr("Navigation"),
+                                 tr("<table>"
+                                    "<tr><td><b>Middle drag</b> or <b>Alt+left drag</b></td><td>orbit</td></tr>"
+                                    "<tr><td><b>Shift+middle</b> or <b>Alt+Shift+left</b></td><td>pan</td></tr>"
+                                    "<tr><td><b>Wheel</b>, <b>Ctrl+middle</b>, pinch</td><td>zoom</td></tr>"
+                                    "<tr><td><b>Two-finger scroll</b></td><td>orbit (Shift: pan)</td></tr>"
+                                    "<tr><td><b>Right drag + W A S D Q E</b></td><td>fly (Shift: faster)</td></tr>"
+                                    "<tr><td><b>F</b> / <b>Home</b></td><td>frame selection / everything</td></tr>"
+                                    "<tr><td><b>Keypad 1 3 7</b> (Ctrl: opposite), <b>0</b>, <b>5</b></td>"
+                                    "<td>front, right, top, isometric, orthographic</td></tr>"
+                                    "<tr><td><b>1 2 3</b></td><td>select objects, parts, faces</td></tr>"
+                                    "<tr><td><b>W E R</b></td><td>move, rotate, scale gizmo</td></tr>"
+                                    "<tr><td><b>C</b></td><td>clip tool: click three points</td></tr>"
+                                    "<tr><td><b>Click</b>, <b>Ctrl+click</b></td><td>select, add or remove</td></tr>"
+                                    "</table>"));
     });
 
     connect(viewport, &Viewport::transformDragged, this, &Authoring::onTransformDragged);
@@ -160,8 +162,9 @@ void Authoring::rebuildMaterialMenu()
         QPixmap swatch(12, 12);
         const bool emits = material.emission.r + material.emission.g + material.emission.b > 0.0;
         swatch.fill(emits ? emissionDisplayColor(material.emission) : linearToColor(material.reflectance));
-        m_materialMenu->addAction(QIcon(swatch), toQString(material.name.empty() ? id : material.name + " (" + id + ")"),
-                                  this, [this, id] { assignMaterial(id); });
+        m_materialMenu->addAction(QIcon(swatch),
+                                  toQString(material.name.empty() ? id : material.name + " (" + id + ")"), this,
+                                  [this, id] { assignMaterial(id); });
     }
     if (m_document->scene().materials.empty())
         m_materialMenu->addAction(tr("No materials"))->setEnabled(false);

@@ -5,10 +5,10 @@
 // through the selection's centre, or through three clicked points), material
 // assignment and gizmo or numeric transforms. Every public edit here works
 // without dialogs too, so tests drive the same code paths the menus do.
-#include "editor/objects/primitives.h"
 #include "editor/document/selection.h"
-#include "model/geometry/geometry.h"
+#include "editor/objects/primitives.h"
 #include "model/edit/edit_parts.h"
+#include "model/geometry/geometry.h"
 
 #include <QObject>
 
@@ -49,8 +49,7 @@ public:
     bool deleteSelection();
     // Changes the selected element's id and (objects, parts, materials,
     // regions) display name.
-    bool renameElement(SelectionKind kind, const std::string& id, const std::string& newId,
-                       const std::string& newName);
+    bool renameElement(SelectionKind kind, const std::string& id, const std::string& newId, const std::string& newName);
     bool groupSelection();
     bool ungroupSelection();
     // Splits the selected parts (or every part of the selected objects) that

@@ -349,8 +349,7 @@ bool Authoring::transformSelection(const glm::dmat4& transform, const QString& t
     return m_document->push(new TransformParts(m_document, parts, transform, text));
 }
 
-void Authoring::onTransformDragged(const std::vector<std::string>& partIds, const glm::dmat4& transform,
-                                   int serial)
+void Authoring::onTransformDragged(const std::vector<std::string>& partIds, const glm::dmat4& transform, int serial)
 {
     if (serial != m_dragSerial || m_dragStart.empty()) {
         // A new drag: remember the geometry it starts from.

@@ -26,7 +26,8 @@ QString PrimitiveDialog::kindName(PrimitiveKind kind)
 }
 
 PrimitiveDialog::PrimitiveDialog(const PrimitiveParams& initial, const model::Scene& scene, QWidget* parent)
-    : QDialog(parent), m_params(initial)
+    : QDialog(parent)
+    , m_params(initial)
 {
     setWindowTitle(tr("New object: %1").arg(kindName(initial.kind)));
     auto* form = new QFormLayout(this);
@@ -62,7 +63,8 @@ PrimitiveDialog::PrimitiveDialog(const PrimitiveParams& initial, const model::Sc
     form->addRow(tr("&Size (m):"), vectorRow(m_size, initial.size, 0.001));
     if (initial.kind == PrimitiveKind::Prism || initial.kind == PrimitiveKind::Stairs) {
         m_count = new QSpinBox(this);
-        m_count->setRange(initial.kind == PrimitiveKind::Prism ? 3 : 1, initial.kind == PrimitiveKind::Prism ? 1024 : 1000);
+        m_count->setRange(initial.kind == PrimitiveKind::Prism ? 3 : 1,
+                          initial.kind == PrimitiveKind::Prism ? 1024 : 1000);
         m_count->setValue(initial.kind == PrimitiveKind::Prism ? initial.sides : initial.steps);
         form->addRow(initial.kind == PrimitiveKind::Prism ? tr("Si&des:") : tr("S&teps:"), m_count);
     }

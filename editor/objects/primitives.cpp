@@ -31,11 +31,10 @@ model::Result<model::Object> buildPrimitive(const PrimitiveParams& p)
     case PrimitiveKind::Box: return wrap(model::makeBox(partId, min, max, p.material));
     case PrimitiveKind::Room: return wrap(model::makeRoom(p.id + ".shell", min, max, p.material));
     case PrimitiveKind::Prism:
-        return wrap(model::makePrism(partId, p.sides, std::min(p.size.x, p.size.z) * 0.5, p.size.y, p.base,
-                                     p.material));
+        return wrap(
+            model::makePrism(partId, p.sides, std::min(p.size.x, p.size.z) * 0.5, p.size.y, p.base, p.material));
     case PrimitiveKind::Wedge: return wrap(model::makeWedge(partId, min, max, p.material));
-    case PrimitiveKind::Stairs:
-        return model::makeStairs(p.id, p.steps, p.size.x, p.size.z, p.size.y, min, p.material);
+    case PrimitiveKind::Stairs: return model::makeStairs(p.id, p.steps, p.size.x, p.size.z, p.size.y, min, p.material);
     }
     return model::makeError("unknown primitive");
 }

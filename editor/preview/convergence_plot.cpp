@@ -17,7 +17,8 @@ constexpr double kFloor = 1e-16;
 
 } // namespace
 
-ConvergenceDock::ConvergenceDock(QWidget* parent) : QDockWidget(tr("Convergence"), parent)
+ConvergenceDock::ConvergenceDock(QWidget* parent)
+    : QDockWidget(tr("Convergence"), parent)
 {
     setObjectName(QStringLiteral("ConvergenceDock"));
     m_chart = new QChart;

@@ -8,7 +8,8 @@
 
 namespace regio::editor {
 
-HemicubeDialog::HemicubeDialog(QWidget* parent) : QDialog(parent)
+HemicubeDialog::HemicubeDialog(QWidget* parent)
+    : QDialog(parent)
 {
     setWindowTitle(tr("Hemicube"));
     auto* layout = new QVBoxLayout(this);
@@ -45,8 +46,9 @@ void HemicubeDialog::setImages(const HemicubeImages& images)
             scaled = scaled.transformed(QTransform().rotate(-90));
         else if (i == 4)
             scaled = scaled.transformed(QTransform().rotate(180));
-        const QSize size = (i == 0) ? QSize(side, side)
-                          : (i == 1 || i == 2) ? QSize(side / 2, side) : QSize(side, side / 2);
+        const QSize size = (i == 0)             ? QSize(side, side)
+                           : (i == 1 || i == 2) ? QSize(side / 2, side)
+                                                : QSize(side, side / 2);
         m_faces[i]->setPixmap(QPixmap::fromImage(scaled.scaled(size, Qt::IgnoreAspectRatio, Qt::FastTransformation)));
         m_faces[i]->setToolTip(tr("Face %1").arg(QLatin1String(names[i])));
     }

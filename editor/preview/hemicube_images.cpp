@@ -14,15 +14,34 @@ std::uint32_t elementColour(int element)
     const double saturation = 0.55 + 0.4 * ((h >> 8) & 0xff) / 255.0;
     const int sector = static_cast<int>(hue) % 6;
     const double f = hue - std::floor(hue);
-    const double p = value * (1 - saturation), q = value * (1 - saturation * f),
-                 t = value * (1 - saturation * (1 - f));
+    const double p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
     double r = value, g = t, b = p;
     switch (sector) {
-    case 1: r = q; g = value; b = p; break;
-    case 2: r = p; g = value; b = t; break;
-    case 3: r = p; g = q; b = value; break;
-    case 4: r = t; g = p; b = value; break;
-    case 5: r = value; g = p; b = q; break;
+    case 1:
+        r = q;
+        g = value;
+        b = p;
+        break;
+    case 2:
+        r = p;
+        g = value;
+        b = t;
+        break;
+    case 3:
+        r = p;
+        g = q;
+        b = value;
+        break;
+    case 4:
+        r = t;
+        g = p;
+        b = value;
+        break;
+    case 5:
+        r = value;
+        g = p;
+        b = q;
+        break;
     default: break;
     }
     auto byte = [](double x) { return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255.0)); };

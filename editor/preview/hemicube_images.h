@@ -22,8 +22,8 @@ struct HemicubeFaceImage {
 struct HemicubeImages {
     int patch = -1;
     int resolution = 0;
-    std::string faceId;                            // the input face the patch belongs to
-    std::array<HemicubeFaceImage, 5> faces;        // top, +x, -x, +y, -y (solver::HemicubeFace order)
+    std::string faceId;                     // the input face the patch belongs to
+    std::array<HemicubeFaceImage, 5> faces; // top, +x, -x, +y, -y (solver::HemicubeFace order)
     int elementsSeen = 0;
     double escaped = 0.0; // form factor to the sky
     double blocked = 0.0; // form factor to back faces

@@ -2,13 +2,13 @@
 
 #include "editor/app/image_file.h"
 
+#include "editor/document/scene_document.h"
 #include "editor/preview/convergence_plot.h"
 #include "editor/preview/hemicube_dialog.h"
 #include "editor/preview/preview_export.h"
 #include "editor/preview/preview_inspector.h"
 #include "editor/preview/solver_dock.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 
 #include <QAction>
@@ -27,10 +27,13 @@
 
 namespace regio::editor {
 
-PreviewController::PreviewController(SceneDocument* document, Viewport* viewport, QMainWindow* window,
-                                     bool interactive)
-    : QObject(window), m_document(document), m_viewport(viewport), m_window(window), m_interactive(interactive),
-      m_runner(new PreviewRunner(this))
+PreviewController::PreviewController(SceneDocument* document, Viewport* viewport, QMainWindow* window, bool interactive)
+    : QObject(window)
+    , m_document(document)
+    , m_viewport(viewport)
+    , m_window(window)
+    , m_interactive(interactive)
+    , m_runner(new PreviewRunner(this))
 {
     m_pool.setMaxThreadCount(1);
     createActions();
@@ -99,9 +102,9 @@ PreviewController::PreviewController(SceneDocument* document, Viewport* viewport
     });
     connect(m_dock, &SolverDock::displayChanged, this, [this] { scheduleLayers(); });
 
-    for (auto signal : {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged,
-                        &SceneDocument::materialsChanged, &SceneDocument::regionsChanged,
-                        &SceneDocument::settingsChanged})
+    for (auto signal :
+         {&SceneDocument::objectsChanged, &SceneDocument::geometryChanged, &SceneDocument::materialsChanged,
+          &SceneDocument::regionsChanged, &SceneDocument::settingsChanged})
         connect(m_document, signal, this, &PreviewController::onSceneChanged);
     connect(m_document, &SceneDocument::sceneReset, this, &PreviewController::onSceneReset);
     updateActions();
@@ -301,7 +304,8 @@ void PreviewController::scheduleLayers()
         auto layers = std::make_shared<PreviewLayers>(buildPreviewLayers(*frame, display));
         if (self)
             QMetaObject::invokeMethod(
-                self.data(), [self, generation, serial, layers] {
+                self.data(),
+                [self, generation, serial, layers] {
                     if (self)
                         self->applyLayers(generation, serial, layers);
                 },
@@ -406,8 +410,7 @@ void PreviewController::showHemicube()
         if (!m_interactive)
             return;
         bool ok = false;
-        patch = QInputDialog::getInt(m_window, tr("Hemicube"),
-                                     tr("Patch (or inspect a surface first):"), 0, 0,
+        patch = QInputDialog::getInt(m_window, tr("Hemicube"), tr("Patch (or inspect a surface first):"), 0, 0,
                                      std::max(0, f->snapshot.stats.patches - 1), 1, &ok);
         if (!ok)
             return;
@@ -441,8 +444,9 @@ std::optional<QString> PreviewController::exportForBatch(const QString& path, QS
 
 void PreviewController::chooseExportModel()
 {
-    const QString path = QFileDialog::getSaveFileName(m_window, tr("Export Lit Model"), QString(),
-                                                      tr("glTF binary (*.glb);;glTF (*.gltf);;PLY (*.ply);;OBJ (*.obj)"));
+    const QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export Lit Model"), QString(),
+                                     tr("glTF binary (*.glb);;glTF (*.gltf);;PLY (*.ply);;OBJ (*.obj)"));
     if (path.isEmpty())
         return;
     if (auto error = exportLitModel(path))
@@ -470,8 +474,8 @@ void PreviewController::chooseExportBatch()
         const QFileInfo info(m_document->filePath());
         suggestion = info.path() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral("-batch.json");
     }
-    const QString path = QFileDialog::getSaveFileName(m_window, tr("Export for Batch"), suggestion,
-                                                      tr("Regio scene (*.json)"));
+    const QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export for Batch"), suggestion, tr("Regio scene (*.json)"));
     if (path.isEmpty())
         return;
     QString command;

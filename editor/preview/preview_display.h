@@ -48,7 +48,7 @@ struct PreviewLayers {
     int elementEdges = 0;              // line segments of the mesh layer: element edges
     int anchoringEdges = 0;            // and anchoring edges (see MeshOverlayColours)
     std::optional<output::FalseColourLegend> legend;
-    double whiteReference = 1.0;       // W/m^2 shown white at exposure 0 (tone mapping)
+    double whiteReference = 1.0; // W/m^2 shown white at exposure 0 (tone mapping)
 };
 
 // The display settings the exports share with the viewport.

@@ -58,10 +58,12 @@ QStringList batchArguments(const QString& scenePath, const PreviewDisplay& displ
 {
     const QFileInfo info(scenePath);
     const QString base = info.path() + QLatin1Char('/') + info.completeBaseName();
-    QStringList args{QStringLiteral("solve"), scenePath, QStringLiteral("--report"), base + QStringLiteral(".report.json"),
-                     QStringLiteral("--out"), base + QStringLiteral(".glb"), QStringLiteral("--image"),
-                     base + QStringLiteral(".png"), QStringLiteral("--exposure"), QString::number(display.exposure),
-                     QStringLiteral("--gamma"), QString::number(display.gamma)};
+    QStringList args{QStringLiteral("solve"),      scenePath,
+                     QStringLiteral("--report"),   base + QStringLiteral(".report.json"),
+                     QStringLiteral("--out"),      base + QStringLiteral(".glb"),
+                     QStringLiteral("--image"),    base + QStringLiteral(".png"),
+                     QStringLiteral("--exposure"), QString::number(display.exposure),
+                     QStringLiteral("--gamma"),    QString::number(display.gamma)};
     if (display.falseColour)
         args << QStringLiteral("--false-colour")
              << (display.falseColourScale == output::FalseColourScale::Linear ? QStringLiteral("linear")

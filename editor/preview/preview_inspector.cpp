@@ -97,7 +97,9 @@ QString describeInspection(const Inspection& i)
     return lines.join(QLatin1Char('\n'));
 }
 
-PreviewInspector::PreviewInspector(FrameSource frames, QObject* parent) : QObject(parent), m_frames(std::move(frames))
+PreviewInspector::PreviewInspector(FrameSource frames, QObject* parent)
+    : QObject(parent)
+    , m_frames(std::move(frames))
 {
 }
 

@@ -17,7 +17,7 @@ namespace regio::editor {
 
 struct Inspection {
     int element = -1;
-    int patch = -1;         // -1 when the frame has no element tables
+    int patch = -1; // -1 when the frame has no element tables
     std::string faceId;
     std::string regionId;
     model::Rgb radiosity{0.0};

@@ -6,7 +6,8 @@
 
 namespace regio::editor {
 
-PreviewRunner::PreviewRunner(QObject* parent) : QObject(parent)
+PreviewRunner::PreviewRunner(QObject* parent)
+    : QObject(parent)
 {
     m_reaper.setInterval(100);
     connect(&m_reaper, &QTimer::timeout, this, &PreviewRunner::reap);
@@ -44,7 +45,8 @@ void PreviewRunner::start(const model::Scene& scene, std::optional<int> exactIte
     m_session = std::make_unique<PreviewSession>(std::move(config), [this, serial](SessionEvent event) {
         // From the worker thread: queued onto the UI thread. The runner joins
         // every session before it is destroyed, so `this` outlives the call.
-        QMetaObject::invokeMethod(this, [this, serial, event] { onEvent(serial, event); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, serial, event] { onEvent(serial, event); }, Qt::QueuedConnection);
     });
 }
 
@@ -64,8 +66,8 @@ void PreviewRunner::resume()
 
 void PreviewRunner::stop()
 {
-    if (m_session && (m_state == PreviewState::Running || m_state == PreviewState::Paused ||
-                      m_state == PreviewState::Preparing))
+    if (m_session &&
+        (m_state == PreviewState::Running || m_state == PreviewState::Paused || m_state == PreviewState::Preparing))
         m_session->stop();
 }
 

@@ -20,8 +20,8 @@ enum class PreviewState {
     Preparing, // building the regional tree, BSP trees and meshes
     Running,
     Paused,
-    Finished,  // converged, maximum iterations or stopped: the solution stays
-    Failed     // the scene could not be prepared (diagnostics say why)
+    Finished, // converged, maximum iterations or stopped: the solution stays
+    Failed    // the scene could not be prepared (diagnostics say why)
 };
 
 class PreviewRunner : public QObject {

@@ -19,9 +19,9 @@ bool solvePreviewForScreenshot(MainWindow& window, int iterations, QString* erro
     QTimer timeout;
     timeout.setSingleShot(true);
     QObject::connect(&timeout, &QTimer::timeout, &loop, [&] {
-        message = QCoreApplication::translate("regio::editor::PreviewScreenshot",
-                                              "the preview did not finish within %1 s")
-                      .arg(timeoutMs / 1000);
+        message =
+            QCoreApplication::translate("regio::editor::PreviewScreenshot", "the preview did not finish within %1 s")
+                .arg(timeoutMs / 1000);
         loop.quit();
     });
     QObject::connect(runner, &PreviewRunner::failed, &loop, [&](const QString& why) {

@@ -1,8 +1,8 @@
 #include "editor/preview/preview_session.h"
 
-#include "solver/visibility/hemicube_view.h"
-#include "solver/shooting/shooting.h"
 #include "output/vertex_radiosity.h"
+#include "solver/shooting/shooting.h"
+#include "solver/visibility/hemicube_view.h"
 
 #include <cmath>
 
@@ -18,7 +18,9 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 } // namespace
 
 PreviewSession::PreviewSession(Config config, Notify notify)
-    : m_config(std::move(config)), m_notify(std::move(notify)), m_start(std::chrono::steady_clock::now())
+    : m_config(std::move(config))
+    , m_notify(std::move(notify))
+    , m_start(std::chrono::steady_clock::now())
 {
     m_paused = m_config.startPaused;
     ++s_live;
@@ -111,9 +113,9 @@ void PreviewSession::record(const solver::SolverStats& stats)
         p.unshot = solver::luminance(e.unshot) / emitted;
         p.absorbed = solver::luminance(e.absorbed) / emitted;
         p.escaped = solver::luminance(e.escaped) / emitted;
-        p.balanceError =
-            std::abs(emitted - solver::luminance(e.absorbed) - solver::luminance(e.unshot) -
-                     solver::luminance(e.escaped)) / emitted;
+        p.balanceError = std::abs(emitted - solver::luminance(e.absorbed) - solver::luminance(e.unshot) -
+                                  solver::luminance(e.escaped)) /
+                         emitted;
     }
     m_history.push_back(p);
 }
@@ -204,7 +206,8 @@ void PreviewSession::serveHemicube()
     if (!request)
         return;
     const solver::PreparedScene& prepared = m_solver->prepared();
-    const auto view = solver::renderHemicubeView(prepared, request->first, request->second, m_solver->settings().visibility);
+    const auto view =
+        solver::renderHemicubeView(prepared, request->first, request->second, m_solver->settings().visibility);
     if (!view)
         return;
     HemicubeImages images = hemicubeImages(*view, prepared);
@@ -248,9 +251,7 @@ void PreviewSession::work()
 
     std::unique_lock<std::mutex> lock(m_mutex);
     for (;;) {
-        m_wake.wait(lock, [&] {
-            return m_quit || m_hemicubeRequest || (!m_done && (m_stopRequested || !m_paused));
-        });
+        m_wake.wait(lock, [&] { return m_quit || m_hemicubeRequest || (!m_done && (m_stopRequested || !m_paused)); });
         if (m_quit)
             break;
         if (m_hemicubeRequest) {

@@ -42,9 +42,9 @@ struct ConvergencePoint {
 // follow the snapshot's own mesh.
 struct PreviewFrame {
     solver::SolutionSnapshot snapshot;
-    std::vector<model::Rgb> unshot;      // per element, W/m^2 (empty if the mesh moved on)
-    std::vector<int> elementPatch;       // per element
-    std::vector<int> elementRegion;      // per element, index into regionIds
+    std::vector<model::Rgb> unshot; // per element, W/m^2 (empty if the mesh moved on)
+    std::vector<int> elementPatch;  // per element
+    std::vector<int> elementRegion; // per element, index into regionIds
     std::vector<std::string> regionIds;
     std::shared_ptr<const output::LitMesh> lit; // smooth vertex radiosity (§6)
     std::vector<ConvergencePoint> history;

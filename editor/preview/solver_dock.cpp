@@ -55,7 +55,8 @@ QSpinBox* intSpin(int min, int max, int step)
 } // namespace
 
 SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget* parent)
-    : QDockWidget(tr("Solver"), parent), m_document(document)
+    : QDockWidget(tr("Solver"), parent)
+    , m_document(document)
 {
     setObjectName(QStringLiteral("SolverDock"));
     auto* content = new QWidget;
@@ -133,8 +134,9 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     falseRow->addWidget(m_falseScale, 1);
     displayForm->addRow(falseRow);
     m_mesh = new QCheckBox(tr("Element mesh"));
-    m_mesh->setToolTip(tr("Draw the element edges (where adaptive subdivision split elements) and, in orange "
-                          "(magenta on false colour), the edges anchoring adds to close T-vertices"));
+    m_mesh->setToolTip(
+        tr("Draw the element edges (where adaptive subdivision split elements) and, in orange "
+           "(magenta on false colour), the edges anchoring adds to close T-vertices"));
     displayForm->addRow(m_mesh);
     m_legend = new LegendWidget;
     displayForm->addRow(m_legend);
@@ -290,18 +292,15 @@ void SolverDock::setLegend(const std::optional<output::FalseColourLegend>& legen
 {
     m_legend->setLegend(legend);
     m_legend->setVisible(legend.has_value());
-    m_white->setText(legend ? QString()
-                            : tr("White at exposure 0: %1 W/m²").arg(whiteReference, 0, 'g', 3));
+    m_white->setText(legend ? QString() : tr("White at exposure 0: %1 W/m²").arg(whiteReference, 0, 'g', 3));
 }
 
-void SolverDock::setInspection(const QString& text)
-{
-    m_inspection->setPlainText(text);
-}
+void SolverDock::setInspection(const QString& text) { m_inspection->setPlainText(text); }
 
 // --- legend -------------------------------------------------------------------
 
-LegendWidget::LegendWidget(QWidget* parent) : QWidget(parent)
+LegendWidget::LegendWidget(QWidget* parent)
+    : QWidget(parent)
 {
     setMinimumHeight(44);
     setToolTip(tr("False colour: luminance of the displayed radiosity, W/m²"));

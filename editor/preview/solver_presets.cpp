@@ -3,8 +3,8 @@
 #include "solver/prepare/prepare.h"
 
 #include <QCoreApplication>
-#include <QtCore/qcoreapplication.h>
 #include <QStringList>
+#include <QtCore/qcoreapplication.h>
 
 #include <chrono>
 
@@ -99,7 +99,9 @@ QString describeDryRun(const DryRun& run)
     QStringList lines;
     lines << SolverPresets::tr("Hemicube: %1 x %1 (sides %1 x %2)").arg(s.hemicube).arg(s.hemicube / 2);
     lines << SolverPresets::tr("Patch size: %1 m, %2 elements per patch").arg(s.patchSize).arg(s.elementsPerPatch);
-    lines << SolverPresets::tr("Stops after %1 iterations or below %2 % unshot").arg(s.maxIterations).arg(100.0 * s.convergence);
+    lines << SolverPresets::tr("Stops after %1 iterations or below %2 % unshot")
+                 .arg(s.maxIterations)
+                 .arg(100.0 * s.convergence);
     lines << SolverPresets::tr("Visibility: %1; regions: %2")
                  .arg(QString::fromLatin1(model::visibilityName(s.visibility)),
                       QString::fromLatin1(model::regionsModeName(s.regions)));
@@ -124,7 +126,8 @@ QString describeDryRun(const DryRun& run)
         lines << SolverPresets::tr("The scene cannot be prepared:");
     }
     for (const model::Diagnostic& d : run.diagnostics)
-        lines << (d.severity == model::Severity::Error ? SolverPresets::tr("error: %1") : SolverPresets::tr("warning: %1"))
+        lines << (d.severity == model::Severity::Error ? SolverPresets::tr("error: %1")
+                                                       : SolverPresets::tr("warning: %1"))
                      .arg(QString::fromStdString(d.message));
     return lines.join(QLatin1Char('\n'));
 }

@@ -1,24 +1,24 @@
 #include "editor/regions/region_authoring.h"
 
-#include "editor/objects/authoring.h"
-#include "editor/document/commands/region_clip_command.h"
-#include "editor/document/commands/region_commands.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/diagnostics_model.h"
+#include "editor/document/commands/region_clip_command.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
+#include "editor/objects/authoring.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "model/geometry/region_clip.h"
 
 #include <QAction>
 #include <QApplication>
-#include <QMenu>
 #include <QItemSelectionModel>
+#include <QMenu>
 #include <QTreeView>
 
 #include <cmath>
@@ -33,9 +33,14 @@ QString layerName(const char* name) { return QString::fromLatin1(name); }
 
 RegionAuthoring::RegionAuthoring(SceneDocument* document, Viewport* viewport, Authoring* authoring,
                                  DiagnosticsDock* diagnostics, QWidget* dialogParent)
-    : QObject(dialogParent), m_document(document), m_viewport(viewport), m_authoring(authoring),
-      m_diagnostics(diagnostics), m_dialogParent(dialogParent),
-      m_tool(new RegionBoxTool(document, viewport, this)), m_figures(new RegionFiguresWatcher(document, this))
+    : QObject(dialogParent)
+    , m_document(document)
+    , m_viewport(viewport)
+    , m_authoring(authoring)
+    , m_diagnostics(diagnostics)
+    , m_dialogParent(dialogParent)
+    , m_tool(new RegionBoxTool(document, viewport, this))
+    , m_figures(new RegionFiguresWatcher(document, this))
 {
     m_draw = new QAction(tr("&Region Tool"), this);
     m_draw->setCheckable(true);
@@ -46,8 +51,9 @@ RegionAuthoring::RegionAuthoring(SceneDocument* document, Viewport* viewport, Au
     connect(m_tool, &RegionBoxTool::statusMessage, this, &RegionAuthoring::statusMessage);
 
     m_aroundSelection = new QAction(tr("Region Around &Selection"), this);
-    m_aroundSelection->setStatusTip(tr("Add a region box around the selected parts (the whole scene when nothing "
-                                       "is selected)"));
+    m_aroundSelection->setStatusTip(
+        tr("Add a region box around the selected parts (the whole scene when nothing "
+           "is selected)"));
     connect(m_aroundSelection, &QAction::triggered, this, &RegionAuthoring::addRegionAroundSelection);
     m_rename = new QAction(tr("Re&name Region…"), this);
     connect(m_rename, &QAction::triggered, this, [this] {
@@ -61,8 +67,9 @@ RegionAuthoring::RegionAuthoring(SceneDocument* document, Viewport* viewport, Au
     });
 
     m_clipSelected = new QAction(tr("&Clip Selected Parts to Regions"), this);
-    m_clipSelected->setStatusTip(tr("Cut each selected part that straddles region boundaries into one piece per "
-                                    "region"));
+    m_clipSelected->setStatusTip(
+        tr("Cut each selected part that straddles region boundaries into one piece per "
+           "region"));
     connect(m_clipSelected, &QAction::triggered, this, &RegionAuthoring::clipSelectedParts);
 
     m_propose = new QAction(tr("&Propose Automatic Regions"), this);
@@ -311,13 +318,11 @@ bool RegionAuthoring::proposeRegions()
                        .arg(proposal.figures.splits)
                        .arg(proposal.figures.maxDepth);
     if (now && now->authored && !scene.regions.empty())
-        text += QStringLiteral("<br>") + tr("Current regions: %1 fragments, %2 splits")
-                                             .arg(now->authored->fragments)
-                                             .arg(now->authored->splits);
+        text += QStringLiteral("<br>") +
+                tr("Current regions: %1 fragments, %2 splits").arg(now->authored->fragments).arg(now->authored->splits);
     if (now && now->baseline)
-        text += QStringLiteral("<br>") + tr("Single BSP: %1 fragments, %2 splits")
-                                             .arg(now->baseline->fragments)
-                                             .arg(now->baseline->splits);
+        text += QStringLiteral("<br>") +
+                tr("Single BSP: %1 fragments, %2 splits").arg(now->baseline->fragments).arg(now->baseline->splits);
     if (!proposal.straddlingParts.empty())
         text += QStringLiteral("<br>") +
                 tr("%n part(s) cross the proposed planes; after accepting, clip them from the Diagnostics "
@@ -380,9 +385,9 @@ void RegionAuthoring::updateBoxesLayer()
         return;
     }
     const Selection& s = m_document->selection();
-    m_viewport->setLayer(name, buildRegionBoxesLayer(m_document->scene(), s.kind == SelectionKind::Region
-                                                                              ? s.ids
-                                                                              : std::vector<std::string>{}));
+    m_viewport->setLayer(name,
+                         buildRegionBoxesLayer(m_document->scene(),
+                                               s.kind == SelectionKind::Region ? s.ids : std::vector<std::string>{}));
 }
 
 void RegionAuthoring::updateColoursLayer()
@@ -404,8 +409,8 @@ void RegionAuthoring::uploadColoursLayer()
     // so rooms can be looked into from outside.
     const Camera& camera = m_viewport->camera();
     const Viewer viewer{camera.eye(), camera.forward(), camera.orthographic()};
-    m_viewport->setLayer(name, buildPartsByRegionLayer(m_colouredFaces,
-                                                       m_viewport->cullBackFaces() ? &viewer : nullptr));
+    m_viewport->setLayer(name,
+                         buildPartsByRegionLayer(m_colouredFaces, m_viewport->cullBackFaces() ? &viewer : nullptr));
 }
 
 void RegionAuthoring::updatePlanesLayer()

@@ -41,8 +41,8 @@ class RegionAuthoring : public QObject {
 public:
     // `authoring` renames and deletes; `diagnostics` (may be null) gets the
     // clip fix in its context menu.
-    RegionAuthoring(SceneDocument* document, Viewport* viewport, Authoring* authoring,
-                    DiagnosticsDock* diagnostics, QWidget* dialogParent);
+    RegionAuthoring(SceneDocument* document, Viewport* viewport, Authoring* authoring, DiagnosticsDock* diagnostics,
+                    QWidget* dialogParent);
     ~RegionAuthoring() override;
 
     void populateRegionsMenu(QMenu* menu);
@@ -85,8 +85,8 @@ signals:
 
 private:
     void updateBoxesLayer();
-    void updateColoursLayer();   // after a scene change: recolours the faces
-    void uploadColoursLayer();   // after a view change: the faces seen from the front
+    void updateColoursLayer(); // after a scene change: recolours the faces
+    void uploadColoursLayer(); // after a view change: the faces seen from the front
     void updatePlanesLayer();
 
     SceneDocument* m_document;

@@ -2,9 +2,9 @@
 
 #include "editor/document/commands/region_commands.h"
 #include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/regions/region_drag_command.h"
 #include "editor/regions/region_layers.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/picking.h"
 #include "editor/viewport/viewport.h"
 
@@ -63,7 +63,9 @@ std::optional<double> rayEntersBox(const Ray& ray, const model::Box3& box)
 } // namespace
 
 RegionBoxTool::RegionBoxTool(SceneDocument* document, Viewport* viewport, QObject* parent)
-    : QObject(parent), m_document(document), m_viewport(viewport)
+    : QObject(parent)
+    , m_document(document)
+    , m_viewport(viewport)
 {
     auto refresh = [this] {
         if (isActive())
@@ -100,8 +102,9 @@ void RegionBoxTool::setActive(bool on)
     m_viewport->setCursor(Qt::CrossCursor);
     m_state = State::Idle;
     updateHandles();
-    emit statusMessage(tr("Region tool: drag on the ground or a horizontal face to draw a box; drag a handle of "
-                          "the selected region to resize it; Esc leaves the tool"));
+    emit statusMessage(
+        tr("Region tool: drag on the ground or a horizontal face to draw a box; drag a handle of "
+           "the selected region to resize it; Esc leaves the tool"));
     emit activeChanged(true);
 }
 
@@ -124,12 +127,12 @@ double RegionBoxTool::snapped(double value, const GizmoSnap& snap)
     return std::round(value / snap.step) * snap.step;
 }
 
-std::optional<double> RegionBoxTool::lineParameter(const model::Vec3& origin, const model::Vec3& axis,
-                                                   const Ray& ray)
+std::optional<double> RegionBoxTool::lineParameter(const model::Vec3& origin, const model::Vec3& axis, const Ray& ray)
 {
     // Closest points of two lines: origin + t * axis and ray.origin + s * ray.direction.
     const model::Vec3 w = origin - ray.origin;
-    const double a = glm::dot(axis, axis), b = glm::dot(axis, ray.direction), c = glm::dot(ray.direction, ray.direction);
+    const double a = glm::dot(axis, axis), b = glm::dot(axis, ray.direction),
+                 c = glm::dot(ray.direction, ray.direction);
     const double d = glm::dot(axis, w), e = glm::dot(ray.direction, w);
     const double denominator = a * c - b * b;
     if (denominator < 1e-9 * a * c)
@@ -221,8 +224,7 @@ bool RegionBoxTool::mousePress(Viewport& viewport, QMouseEvent* event)
         m_regionId = region->id;
         m_startBox = boxOf(*region);
         m_handle = handle;
-        m_startParameter =
-            lineParameter(handlePosition(m_startBox, handle), unitAxis(handle / 2), ray).value_or(0.0);
+        m_startParameter = lineParameter(handlePosition(m_startBox, handle), unitAxis(handle / 2), ray).value_or(0.0);
         m_state = State::Resizing;
         ++m_dragSerial;
         updateHandles();
@@ -270,9 +272,9 @@ bool RegionBoxTool::mouseMove(Viewport& viewport, QMouseEvent* event)
             m_end = *p;
         updateDraftLayer();
         const model::Box3 box = boxFromFootprint(m_start, m_end);
-        emit statusMessage(tr("Region %1 × %2 × %3 m")
-                               .arg(formatNumber(box.size().x, 3), formatNumber(box.size().y, 3),
-                                    formatNumber(box.size().z, 3)));
+        emit statusMessage(
+            tr("Region %1 × %2 × %3 m")
+                .arg(formatNumber(box.size().x, 3), formatNumber(box.size().y, 3), formatNumber(box.size().z, 3)));
         return true;
     }
     case State::Resizing: {
@@ -301,8 +303,7 @@ bool RegionBoxTool::mouseMove(Viewport& viewport, QMouseEvent* event)
         static const char* kAxis[3] = {"x", "y", "z"};
         emit statusMessage(tr("Region %1: %2 %3 = %4 m")
                                .arg(toQString(m_regionId), maxSide ? tr("max") : tr("min"),
-                                    QString::fromLatin1(kAxis[axis]),
-                                    formatNumber(maxSide ? hi[axis] : lo[axis], 4)));
+                                    QString::fromLatin1(kAxis[axis]), formatNumber(maxSide ? hi[axis] : lo[axis], 4)));
         return true;
     }
     }
@@ -317,9 +318,7 @@ bool RegionBoxTool::mouseRelease(Viewport& viewport, QMouseEvent* event)
     const State state = m_state;
     m_state = State::Idle;
     switch (state) {
-    case State::Pressed:
-        selectRegionAt(pos.x(), pos.y());
-        break;
+    case State::Pressed: selectRegionAt(pos.x(), pos.y()); break;
     case State::Drawing: {
         const Ray ray = viewport.screenView().ray(pos.x(), pos.y());
         if (std::optional<model::Vec3> p = planePoint(ray))
@@ -331,8 +330,7 @@ bool RegionBoxTool::mouseRelease(Viewport& viewport, QMouseEvent* event)
         m_handle = -1;
         updateHandles();
         break;
-    case State::Idle:
-        break;
+    case State::Idle: break;
     }
     return true;
 }

@@ -4,7 +4,8 @@ namespace regio::editor {
 
 ResizeRegionByHandle::ResizeRegionByHandle(SceneDocument* document, std::string regionId, const model::Vec3& min,
                                            const model::Vec3& max, int dragSerial)
-    : SetRegionBox(document, std::move(regionId), min, max), m_serial(dragSerial)
+    : SetRegionBox(document, std::move(regionId), min, max)
+    , m_serial(dragSerial)
 {
 }
 

@@ -9,8 +9,8 @@ namespace regio::editor {
 
 class ResizeRegionByHandle : public SetRegionBox {
 public:
-    ResizeRegionByHandle(SceneDocument* document, std::string regionId, const model::Vec3& min,
-                         const model::Vec3& max, int dragSerial);
+    ResizeRegionByHandle(SceneDocument* document, std::string regionId, const model::Vec3& min, const model::Vec3& max,
+                         int dragSerial);
     bool mergeWith(const QUndoCommand* other) override;
     int dragSerial() const { return m_serial; }
 

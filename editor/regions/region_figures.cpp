@@ -1,7 +1,7 @@
 #include "editor/regions/region_figures.h"
 
-#include "editor/regions/region_layers.h"
 #include "editor/document/scene_document.h"
+#include "editor/regions/region_layers.h"
 #include "model/geometry/region_clip.h"
 
 #include <QCoreApplication>
@@ -58,7 +58,8 @@ std::vector<RegionContents> regionContents(const model::Scene& scene)
 }
 
 RegionFiguresWatcher::RegionFiguresWatcher(SceneDocument* document, QObject* parent)
-    : QObject(parent), m_document(document)
+    : QObject(parent)
+    , m_document(document)
 {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(kDelayMs);
@@ -102,7 +103,8 @@ void RegionFiguresWatcher::start()
         return;
     }
     auto result = std::make_shared<solver::BspComparison>();
-    m_thread = QThread::create([scene = m_document->scene(), result] { *result = solver::compareWithSingleBsp(scene); });
+    m_thread =
+        QThread::create([scene = m_document->scene(), result] { *result = solver::compareWithSingleBsp(scene); });
     connect(m_thread, &QThread::finished, this, [this, result] {
         m_thread->deleteLater();
         m_thread = nullptr;

@@ -139,8 +139,7 @@ ViewportLayer buildProposalLayer(const std::vector<model::Region>& regions)
                 const model::Vec3 a = corner(box, i), b = corner(box, i | bit);
                 const int dashes = 12;
                 for (int d = 0; d < dashes; d += 2)
-                    layer.lines.add(a + (b - a) * (double(d) / dashes), a + (b - a) * (double(d + 1) / dashes),
-                                    colour);
+                    layer.lines.add(a + (b - a) * (double(d) / dashes), a + (b - a) * (double(d + 1) / dashes), colour);
             }
         for (int face = 0; face < 6; ++face)
             addQuad(layer.triangles, boxFace(box, face), regionColour(int(r), 0.06f));
@@ -175,8 +174,7 @@ ViewportLayer buildPartsByRegionLayer(const std::vector<ColouredFace>& faces, co
     layer.order = -10;
     for (const ColouredFace& face : faces) {
         if (viewer) {
-            const model::Vec3 toEye =
-                viewer->orthographic ? -viewer->forward : viewer->eye - face.loop.front();
+            const model::Vec3 toEye = viewer->orthographic ? -viewer->forward : viewer->eye - face.loop.front();
             if (glm::dot(face.normal, toEye) <= 0.0)
                 continue;
         }
@@ -239,8 +237,8 @@ ViewportLayer buildSeparatingPlanesLayer(const RegionalTreeView& view, int highl
     layer.depthTest = false; // as the boxes: planes run through the parts
     layer.offsetTriangles = false;
     layer.order = 5;
-    static const glm::vec4 kAxisColour[3] = {{1.0f, 0.35f, 0.3f, 1.0f}, {0.35f, 0.9f, 0.35f, 1.0f},
-                                             {0.35f, 0.5f, 1.0f, 1.0f}};
+    static const glm::vec4 kAxisColour[3] = {
+        {1.0f, 0.35f, 0.3f, 1.0f}, {0.35f, 0.9f, 0.35f, 1.0f}, {0.35f, 0.5f, 1.0f, 1.0f}};
     for (const SeparatingPlane& plane : view.planes) {
         model::Box3 flat = plane.cell;
         flat.min[plane.axis] = flat.max[plane.axis] = plane.position;
@@ -277,8 +275,8 @@ ViewportLayer buildHandlesLayer(const model::Box3& box, double size, int active)
         half[axis] = 0.0;
         square.extend(centre - half);
         square.extend(centre + half);
-        const glm::vec4 colour = handle == active ? glm::vec4(1.0f, 0.85f, 0.2f, 0.95f)
-                                                  : glm::vec4(0.95f, 0.95f, 1.0f, 0.8f);
+        const glm::vec4 colour =
+            handle == active ? glm::vec4(1.0f, 0.85f, 0.2f, 0.95f) : glm::vec4(0.95f, 0.95f, 1.0f, 0.8f);
         addQuad(layer.triangles, boxFace(square, handle), colour);
         const std::array<model::Vec3, 4> q = boxFace(square, handle);
         for (int i = 0; i < 4; ++i)

@@ -2,9 +2,9 @@
 
 #include "editor/document/commands/region_commands.h"
 #include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
-#include "editor/document/scene_document.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -20,8 +20,8 @@ namespace regio::editor {
 
 namespace {
 
-constexpr int kIdRole = Qt::UserRole;        // region id (list rows, tree leaves)
-constexpr int kNodeRole = Qt::UserRole + 1;  // regional tree node index
+constexpr int kIdRole = Qt::UserRole;       // region id (list rows, tree leaves)
+constexpr int kNodeRole = Qt::UserRole + 1; // regional tree node index
 
 QColor swatch(int index)
 {
@@ -35,7 +35,9 @@ QString axisName(int axis) { return QStringLiteral("xyz").mid(axis, 1); }
 
 RegionsDock::RegionsDock(SceneDocument* document, RegionFiguresWatcher* figures, const QList<QAction*>& actions,
                          QWidget* parent)
-    : QDockWidget(tr("Regions"), parent), m_document(document), m_figures(figures)
+    : QDockWidget(tr("Regions"), parent)
+    , m_document(document)
+    , m_figures(figures)
 {
     setObjectName(QStringLiteral("RegionsDock"));
     auto* body = new QWidget(this);

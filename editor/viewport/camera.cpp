@@ -40,10 +40,7 @@ model::Vec3 Camera::right() const { return glm::normalize(glm::cross(forward(), 
 
 glm::dmat4 Camera::viewMatrix() const { return glm::lookAt(eye(), m_target, up()); }
 
-double Camera::nearPlane() const
-{
-    return std::max(1e-4, std::min(m_distance * 0.01, 0.05 * m_sceneRadius + 1e-3));
-}
+double Camera::nearPlane() const { return std::max(1e-4, std::min(m_distance * 0.01, 0.05 * m_sceneRadius + 1e-3)); }
 
 double Camera::farPlane() const { return m_distance * 4.0 + m_sceneRadius * 8.0 + 10.0; }
 
@@ -79,10 +76,7 @@ void Camera::zoom(double factor)
     m_distance = std::clamp(m_distance * factor, kMinDistance, 1e7);
 }
 
-void Camera::fly(const model::Vec3& v)
-{
-    m_target += v.x * right() + v.y * up() + v.z * forward();
-}
+void Camera::fly(const model::Vec3& v) { m_target += v.x * right() + v.y * up() + v.z * forward(); }
 
 void Camera::look(double deltaYaw, double deltaPitch)
 {
@@ -107,13 +101,34 @@ void Camera::frame(const model::Box3& box, double aspect)
 void Camera::setStandardView(StandardView view)
 {
     switch (view) {
-    case StandardView::Front: m_yaw = 0; m_pitch = 0; break;
-    case StandardView::Back: m_yaw = 180; m_pitch = 0; break;
-    case StandardView::Right: m_yaw = 90; m_pitch = 0; break;
-    case StandardView::Left: m_yaw = -90; m_pitch = 0; break;
-    case StandardView::Top: m_yaw = 0; m_pitch = 90; break;
-    case StandardView::Bottom: m_yaw = 0; m_pitch = -90; break;
-    case StandardView::Iso: m_yaw = 35; m_pitch = 30; break;
+    case StandardView::Front:
+        m_yaw = 0;
+        m_pitch = 0;
+        break;
+    case StandardView::Back:
+        m_yaw = 180;
+        m_pitch = 0;
+        break;
+    case StandardView::Right:
+        m_yaw = 90;
+        m_pitch = 0;
+        break;
+    case StandardView::Left:
+        m_yaw = -90;
+        m_pitch = 0;
+        break;
+    case StandardView::Top:
+        m_yaw = 0;
+        m_pitch = 90;
+        break;
+    case StandardView::Bottom:
+        m_yaw = 0;
+        m_pitch = -90;
+        break;
+    case StandardView::Iso:
+        m_yaw = 35;
+        m_pitch = 30;
+        break;
     }
 }
 
@@ -168,15 +183,9 @@ glm::dvec3 Camera::project(const model::Vec3& world, double aspect) const
     return glm::dvec3(clip) / clip.w;
 }
 
-double Camera::worldPerNdcAtTarget() const
-{
-    return m_distance * std::tan(radians(m_fovY) * 0.5);
-}
+double Camera::worldPerNdcAtTarget() const { return m_distance * std::tan(radians(m_fovY) * 0.5); }
 
-glm::dvec2 ScreenView::toNdc(double px, double py) const
-{
-    return {2.0 * px / width - 1.0, 1.0 - 2.0 * py / height};
-}
+glm::dvec2 ScreenView::toNdc(double px, double py) const { return {2.0 * px / width - 1.0, 1.0 - 2.0 * py / height}; }
 
 std::optional<glm::dvec2> ScreenView::toPixels(const model::Vec3& world) const
 {
@@ -190,9 +199,8 @@ Ray ScreenView::ray(double px, double py) const { return camera.rayThrough(toNdc
 
 double ScreenView::worldPerPixelAt(const model::Vec3& p) const
 {
-    const double depth = camera.orthographic()
-                             ? camera.distance()
-                             : std::max(glm::dot(p - camera.eye(), camera.forward()), 1e-6);
+    const double depth =
+        camera.orthographic() ? camera.distance() : std::max(glm::dot(p - camera.eye(), camera.forward()), 1e-6);
     return 2.0 * depth * std::tan(radians(camera.fovYDegrees()) * 0.5) / std::max(height, 1.0);
 }
 

@@ -77,8 +77,8 @@ public:
 private:
     model::Vec3 m_target{0.0};
     double m_distance = 5.0;
-    double m_yaw = 30.0;    // degrees about +y; 0 looks along -z
-    double m_pitch = 25.0;  // degrees above the horizon
+    double m_yaw = 30.0;   // degrees about +y; 0 looks along -z
+    double m_pitch = 25.0; // degrees above the horizon
     double m_fovY = 45.0;
     bool m_orthographic = false;
     double m_sceneRadius = 5.0;

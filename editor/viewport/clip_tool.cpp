@@ -4,8 +4,7 @@
 
 namespace regio::editor {
 
-std::optional<model::Plane> ClipTool::planeThrough(const model::Vec3& a, const model::Vec3& b,
-                                                   const model::Vec3& c)
+std::optional<model::Plane> ClipTool::planeThrough(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c)
 {
     const model::Vec3 n = glm::cross(b - a, c - a);
     const double scale = glm::length(b - a) * glm::length(c - a);

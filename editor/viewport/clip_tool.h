@@ -12,8 +12,16 @@ namespace regio::editor {
 
 class ClipTool {
 public:
-    void start() { m_points.clear(); m_active = true; }
-    void cancel() { m_points.clear(); m_active = false; }
+    void start()
+    {
+        m_points.clear();
+        m_active = true;
+    }
+    void cancel()
+    {
+        m_points.clear();
+        m_active = false;
+    }
     bool active() const { return m_active; }
     const std::vector<model::Vec3>& points() const { return m_points; }
 
@@ -26,8 +34,7 @@ public:
 
     // The plane through three points (normal by the right-hand rule a->b->c),
     // nullopt when they are (nearly) collinear.
-    static std::optional<model::Plane> planeThrough(const model::Vec3& a, const model::Vec3& b,
-                                                    const model::Vec3& c);
+    static std::optional<model::Plane> planeThrough(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c);
 
 private:
     std::vector<model::Vec3> m_points;

@@ -15,9 +15,9 @@ enum VertexAttribute : unsigned { PositionAttribute = 0, NormalAttribute = 1, Co
 class GlMesh {
 public:
     enum class Layout {
-        Position,           // xyz
-        PositionNormal,     // xyz nxnynz
-        PositionColour,     // xyz rgba (interleaved)
+        Position,       // xyz
+        PositionNormal, // xyz nxnynz
+        PositionColour, // xyz rgba (interleaved)
     };
 
     void create(Layout layout, bool separateColours = false);

@@ -15,8 +15,7 @@ void LineList::add(const model::Vec3& a, const model::Vec3& b, const glm::vec4& 
     }
 }
 
-void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c,
-                           const glm::vec4& colour)
+void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c, const glm::vec4& colour)
 {
     for (const model::Vec3& p : {a, b, c}) {
         m_vertices.insert(m_vertices.end(), {float(p.x), float(p.y), float(p.z)});
@@ -24,8 +23,8 @@ void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const mod
     }
 }
 
-void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c,
-                           const glm::vec4& colourA, const glm::vec4& colourB, const glm::vec4& colourC)
+void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c, const glm::vec4& colourA,
+                           const glm::vec4& colourB, const glm::vec4& colourC)
 {
     const model::Vec3* points[3] = {&a, &b, &c};
     const glm::vec4* colours[3] = {&colourA, &colourB, &colourC};
@@ -39,17 +38,15 @@ void LineList::addTriangle(const model::Vec3& a, const model::Vec3& b, const mod
 
 void LineList::addBox(const model::Vec3& lo, const model::Vec3& hi, const glm::vec4& colour)
 {
-    auto corner = [&](int i) {
-        return model::Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    };
+    auto corner = [&](int i) { return model::Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z); };
     for (int i = 0; i < 8; ++i)
         for (int bit : {1, 2, 4})
             if (!(i & bit))
                 add(corner(i), corner(i | bit), colour);
 }
 
-void LineList::addCircle(const model::Vec3& centre, const model::Vec3& axis, double radius,
-                         const glm::vec4& colour, int segments)
+void LineList::addCircle(const model::Vec3& centre, const model::Vec3& axis, double radius, const glm::vec4& colour,
+                         int segments)
 {
     const model::Vec3 n = glm::normalize(axis);
     const model::Vec3 helper = std::abs(n.y) < 0.9 ? model::Vec3(0, 1, 0) : model::Vec3(1, 0, 0);

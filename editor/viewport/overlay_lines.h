@@ -16,14 +16,13 @@ public:
     void add(const model::Vec3& a, const model::Vec3& b, const glm::vec4& colour);
     void addBox(const model::Vec3& min, const model::Vec3& max, const glm::vec4& colour);
     // Three vertices of a filled triangle (for LineLists drawn as triangles).
-    void addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c,
-                     const glm::vec4& colour);
+    void addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c, const glm::vec4& colour);
     // The same with a colour per vertex (Gouraud-shaded layers).
-    void addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c,
-                     const glm::vec4& colourA, const glm::vec4& colourB, const glm::vec4& colourC);
+    void addTriangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c, const glm::vec4& colourA,
+                     const glm::vec4& colourB, const glm::vec4& colourC);
     void reserve(size_t vertexCount) { m_vertices.reserve(vertexCount * 7); }
-    void addCircle(const model::Vec3& centre, const model::Vec3& axis, double radius,
-                   const glm::vec4& colour, int segments = 48);
+    void addCircle(const model::Vec3& centre, const model::Vec3& axis, double radius, const glm::vec4& colour,
+                   int segments = 48);
     void append(const LineList& other)
     {
         m_vertices.insert(m_vertices.end(), other.m_vertices.begin(), other.m_vertices.end());

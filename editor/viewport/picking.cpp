@@ -13,8 +13,7 @@ namespace {
 
 // Inside test for a convex polygon: the point is on the inner side of every
 // edge, seen along the polygon's normal (edges run counter-clockwise).
-bool insideConvex(const std::vector<model::Vec3>& loop, const model::Vec3& normal,
-                  const model::Vec3& p)
+bool insideConvex(const std::vector<model::Vec3>& loop, const model::Vec3& normal, const model::Vec3& p)
 {
     const double eps = 1e-9;
     for (size_t i = 0; i < loop.size(); ++i) {

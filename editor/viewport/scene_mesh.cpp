@@ -33,8 +33,7 @@ bool validLoop(const model::Part& part, const model::Face& face)
 
 } // namespace
 
-FaceAppearance faceAppearance(const model::Scene& scene, const model::Part& part,
-                              const model::Face& face)
+FaceAppearance faceAppearance(const model::Scene& scene, const model::Part& part, const model::Face& face)
 {
     FaceAppearance out;
     const model::Material* material = scene.materialOf(part, face);

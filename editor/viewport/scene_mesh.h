@@ -60,8 +60,7 @@ struct FaceAppearance {
     float r = 1.0f, g = 0.0f, b = 1.0f;
     bool emissive = false;
 };
-FaceAppearance faceAppearance(const model::Scene& scene, const model::Part& part,
-                              const model::Face& face);
+FaceAppearance faceAppearance(const model::Scene& scene, const model::Part& part, const model::Face& face);
 
 // Bounds of the given faces (all faces when ids is empty).
 model::Box3 boundsOfFaces(const model::Scene& scene, const std::vector<std::string>& faceIds);

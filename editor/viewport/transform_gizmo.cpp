@@ -79,8 +79,7 @@ LineList TransformGizmo::lines(const ScreenView& view, GizmoHandle highlighted) 
         const model::Vec3 tip = m_pivot + axis * length;
         out.add(m_pivot, tip, colour);
         // Arrow heads for move, small squares for scale.
-        const model::Vec3 side = glm::normalize(glm::cross(axis, view.camera.forward()) +
-                                                model::Vec3(1e-9));
+        const model::Vec3 side = glm::normalize(glm::cross(axis, view.camera.forward()) + model::Vec3(1e-9));
         const double s = length * 0.08;
         if (m_mode == GizmoMode::Move) {
             out.add(tip, tip - axis * s * 2.0 + side * s, colour);
@@ -221,8 +220,8 @@ glm::dmat4 TransformGizmo::dragTo(const ScreenView& view, double px, double py, 
                 s = snapTo(s, snap.step);
             delta = axis * s;
         }
-        m_description = tr("Move by (%1, %2, %3) m")
-                            .arg(delta.x, 0, 'g', 4).arg(delta.y, 0, 'g', 4).arg(delta.z, 0, 'g', 4);
+        m_description =
+            tr("Move by (%1, %2, %3) m").arg(delta.x, 0, 'g', 4).arg(delta.y, 0, 'g', 4).arg(delta.z, 0, 'g', 4);
         return glm::translate(identity, delta);
     }
     if (m_mode == GizmoMode::Rotate) {
@@ -232,8 +231,7 @@ glm::dmat4 TransformGizmo::dragTo(const ScreenView& view, double px, double py, 
         double degrees = std::remainder((*angle - m_startAngle) * 180.0 / M_PI, 360.0);
         if (snap.enabled)
             degrees = snapTo(degrees, snap.angleDegrees);
-        m_description = tr("Rotate by %1° about %2")
-                            .arg(degrees, 0, 'g', 4).arg(QLatin1String(axisName(m_dragHandle)));
+        m_description = tr("Rotate by %1° about %2").arg(degrees, 0, 'g', 4).arg(QLatin1String(axisName(m_dragHandle)));
         return toPivot * glm::rotate(identity, degrees * M_PI / 180.0, axis) * fromPivot;
     }
     // Scale: along an axis by the ratio of distances from the pivot, or
@@ -250,11 +248,9 @@ glm::dmat4 TransformGizmo::dragTo(const ScreenView& view, double px, double py, 
         factor = snapTo(factor, snap.scaleStep);
     // A zero or negative factor would flatten or mirror the part.
     factor = std::max(factor, snap.enabled ? snap.scaleStep : 0.01);
-    const model::Vec3 scale = m_dragHandle == GizmoHandle::Centre
-                                  ? model::Vec3(factor)
-                                  : model::Vec3(1.0) + axis * (factor - 1.0);
-    m_description = tr("Scale by %1")
-                        .arg(factor, 0, 'g', 4);
+    const model::Vec3 scale =
+        m_dragHandle == GizmoHandle::Centre ? model::Vec3(factor) : model::Vec3(1.0) + axis * (factor - 1.0);
+    m_description = tr("Scale by %1").arg(factor, 0, 'g', 4);
     return toPivot * glm::scale(identity, scale) * fromPivot;
 }
 

@@ -27,7 +27,8 @@ QSurfaceFormat Viewport::requestedFormat()
 }
 
 Viewport::Viewport(SceneDocument* document, QWidget* parent)
-    : QOpenGLWidget(parent), m_document(document)
+    : QOpenGLWidget(parent)
+    , m_document(document)
 {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
@@ -285,9 +286,8 @@ void Viewport::initializeGL()
     const bool versionOk = format.majorVersion() > 3 || (format.majorVersion() == 3 && format.minorVersion() >= 3);
     QString error;
     if (!versionOk) {
-        m_renderingError = tr("OpenGL 3.3 is needed, this system offers %1.%2")
-                               .arg(format.majorVersion())
-                               .arg(format.minorVersion());
+        m_renderingError =
+            tr("OpenGL 3.3 is needed, this system offers %1.%2").arg(format.majorVersion()).arg(format.minorVersion());
     } else if (!m_renderer.initialize(&error)) {
         m_renderingError = tr("The viewport shaders do not compile: %1").arg(error);
     } else {
@@ -326,8 +326,8 @@ void Viewport::makeCurrentAndUpload()
     }
     if (m_regionsDirty) {
         const Selection& s = m_document->selection();
-        m_renderer.uploadRegions(buildRegionBoxes(
-            scene, s.kind == SelectionKind::Region ? s.ids : std::vector<std::string>{}));
+        m_renderer.uploadRegions(
+            buildRegionBoxes(scene, s.kind == SelectionKind::Region ? s.ids : std::vector<std::string>{}));
         m_regionsDirty = false;
     }
     if (m_gridDirty) {
@@ -369,8 +369,7 @@ void Viewport::paintGL()
 bool Viewport::gizmoVisible() const
 {
     const Selection& s = m_document->selection();
-    return !m_clip.active() && (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part) &&
-           !s.empty();
+    return !m_clip.active() && (s.kind == SelectionKind::Object || s.kind == SelectionKind::Part) && !s.empty();
 }
 
 void Viewport::updateGizmo()

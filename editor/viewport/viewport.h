@@ -95,8 +95,7 @@ signals:
     void clipPlaneChosen(const model::Plane& plane);
     // A gizmo drag: the whole transform since the drag began, for the parts
     // given. `serial` identifies the drag so its steps merge into one edit.
-    void transformDragged(const std::vector<std::string>& partIds, const glm::dmat4& transform,
-                          int serial);
+    void transformDragged(const std::vector<std::string>& partIds, const glm::dmat4& transform, int serial);
     void transformDragFinished();
 
 protected:

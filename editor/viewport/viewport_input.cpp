@@ -24,8 +24,8 @@ constexpr double kOrbitDegreesPerPixel = 0.4;
 
 bool isFlyKey(int key)
 {
-    return key == Qt::Key_W || key == Qt::Key_A || key == Qt::Key_S || key == Qt::Key_D ||
-           key == Qt::Key_Q || key == Qt::Key_E;
+    return key == Qt::Key_W || key == Qt::Key_A || key == Qt::Key_S || key == Qt::Key_D || key == Qt::Key_Q ||
+           key == Qt::Key_E;
 }
 
 } // namespace
@@ -93,8 +93,8 @@ void Viewport::mousePressEvent(QMouseEvent* event)
             return;
         }
         updateGizmo(); // the selection may have changed since the last frame
-        const GizmoHandle handle = gizmoVisible() ? m_gizmo.hitTest(view, m_pressPos.x(), m_pressPos.y())
-                                                  : GizmoHandle::None;
+        const GizmoHandle handle =
+            gizmoVisible() ? m_gizmo.hitTest(view, m_pressPos.x(), m_pressPos.y()) : GizmoHandle::None;
         if (handle != GizmoHandle::None) {
             m_drag = Drag::Gizmo;
             m_dragMoved = false;
@@ -119,15 +119,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     m_lastPos = pos;
     const ScreenView view = screenView();
     switch (m_drag) {
-    case Drag::Orbit:
-        m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
-        break;
-    case Drag::Pan:
-        m_camera.pan(2.0 * delta.x() / view.height, -2.0 * delta.y() / view.height);
-        break;
-    case Drag::Zoom:
-        m_camera.zoom(std::pow(1.01, delta.y()));
-        break;
+    case Drag::Orbit: m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel); break;
+    case Drag::Pan: m_camera.pan(2.0 * delta.x() / view.height, -2.0 * delta.y() / view.height); break;
+    case Drag::Zoom: m_camera.zoom(std::pow(1.01, delta.y())); break;
     case Drag::Look:
         m_camera.look(-delta.x() * kOrbitDegreesPerPixel * 0.5, -delta.y() * kOrbitDegreesPerPixel * 0.5);
         break;
@@ -140,8 +134,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         emit statusMessage(m_gizmo.dragDescription());
         break;
     }
-    case Drag::Click:
-        break;
+    case Drag::Click: break;
     case Drag::None: {
         // Hover feedback: the gizmo handle, else the face under the cursor.
         const GizmoHandle handle = gizmoVisible() ? m_gizmo.hitTest(view, pos.x(), pos.y()) : GizmoHandle::None;
@@ -172,8 +165,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event)
         selectAt(pos, event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
         const Ray ray = screenView().ray(pos.x(), pos.y());
         if (const auto hit = pickFace(m_document->scene(), ray, m_params.cullBackFaces))
-            emit statusMessage(tr("%1 › %2 › %3").arg(toQString(hit->objectId), toQString(hit->partId),
-                                                      toQString(hit->faceId)));
+            emit statusMessage(
+                tr("%1 › %2 › %3").arg(toQString(hit->objectId), toQString(hit->partId), toQString(hit->faceId)));
     }
     if (m_drag == Drag::Gizmo) {
         m_gizmo.endDrag();
@@ -275,12 +268,18 @@ void Viewport::flyStep()
     if (QGuiApplication::keyboardModifiers() & Qt::ShiftModifier)
         speed *= 4.0;
     model::Vec3 move(0.0);
-    if (m_flyKeys.contains(Qt::Key_W)) move.z += 1;
-    if (m_flyKeys.contains(Qt::Key_S)) move.z -= 1;
-    if (m_flyKeys.contains(Qt::Key_D)) move.x += 1;
-    if (m_flyKeys.contains(Qt::Key_A)) move.x -= 1;
-    if (m_flyKeys.contains(Qt::Key_E)) move.y += 1;
-    if (m_flyKeys.contains(Qt::Key_Q)) move.y -= 1;
+    if (m_flyKeys.contains(Qt::Key_W))
+        move.z += 1;
+    if (m_flyKeys.contains(Qt::Key_S))
+        move.z -= 1;
+    if (m_flyKeys.contains(Qt::Key_D))
+        move.x += 1;
+    if (m_flyKeys.contains(Qt::Key_A))
+        move.x -= 1;
+    if (m_flyKeys.contains(Qt::Key_E))
+        move.y += 1;
+    if (m_flyKeys.contains(Qt::Key_Q))
+        move.y -= 1;
     m_camera.fly(move * speed);
     m_toolDirty = true;
     emit viewChanged();

@@ -73,8 +73,7 @@ out vec4 fragColour;
 void main() { fragColour = vColour; }
 )";
 
-std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertex, const char* fragment,
-                                                   QString* error)
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertex, const char* fragment, QString* error)
 {
     auto program = std::make_unique<QOpenGLShaderProgram>();
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
@@ -113,8 +112,8 @@ void ViewportRenderer::release()
         layer->lines.destroy();
     }
     m_layers.clear();
-    for (GlMesh* mesh : {&m_surfaces, &m_edges, &m_normals, &m_selectionFill, &m_selectionEdges,
-                         &m_grid, &m_regions, &m_toolLines, &m_toolTriangles})
+    for (GlMesh* mesh : {&m_surfaces, &m_edges, &m_normals, &m_selectionFill, &m_selectionEdges, &m_grid, &m_regions,
+                         &m_toolLines, &m_toolTriangles})
         mesh->destroy();
     m_surfaceProgram.reset();
     m_flatProgram.reset();
@@ -128,10 +127,7 @@ void ViewportRenderer::uploadScene(const SceneMesh& mesh)
     m_normals.upload(mesh.normalVertices());
 }
 
-void ViewportRenderer::uploadColours(const SceneMesh& mesh)
-{
-    m_surfaces.uploadColours(mesh.colourVertices());
-}
+void ViewportRenderer::uploadColours(const SceneMesh& mesh) { m_surfaces.uploadColours(mesh.colourVertices()); }
 
 void ViewportRenderer::uploadSelection(const SceneMesh& mesh, const std::vector<std::string>& faceIds)
 {
@@ -154,10 +150,7 @@ void ViewportRenderer::uploadSelection(const SceneMesh& mesh, const std::vector<
 void ViewportRenderer::uploadGrid(const LineList& lines) { m_grid.upload(lines.vertices()); }
 void ViewportRenderer::uploadRegions(const LineList& lines) { m_regions.upload(lines.vertices()); }
 void ViewportRenderer::uploadToolLines(const LineList& lines) { m_toolLines.upload(lines.vertices()); }
-void ViewportRenderer::uploadToolTriangles(const LineList& triangles)
-{
-    m_toolTriangles.upload(triangles.vertices());
-}
+void ViewportRenderer::uploadToolTriangles(const LineList& triangles) { m_toolTriangles.upload(triangles.vertices()); }
 
 void ViewportRenderer::uploadLayer(const QString& name, const ViewportLayer& layer)
 {
@@ -245,8 +238,7 @@ void ViewportRenderer::render(const RenderParams& p)
         m_surfaceProgram->bind();
         gl->glUniformMatrix4fv(m_surfaceProgram->uniformLocation("uViewProjection"), 1, GL_FALSE, vp);
         m_surfaceProgram->setUniformValue("uEye", p.eye.x, p.eye.y, p.eye.z);
-        m_surfaceProgram->setUniformValue("uViewDirection", p.viewDirection.x, p.viewDirection.y,
-                                          p.viewDirection.z);
+        m_surfaceProgram->setUniformValue("uViewDirection", p.viewDirection.x, p.viewDirection.y, p.viewDirection.z);
         m_surfaceProgram->setUniformValue("uOrthographic", p.orthographic);
         m_surfaceProgram->setUniformValue("uMode", p.shading == ShadingMode::Normals ? 1 : 0);
         m_surfaces.draw(GL_TRIANGLES);

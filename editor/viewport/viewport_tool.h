@@ -19,7 +19,7 @@ public:
     virtual bool mouseRelease(Viewport&, QMouseEvent*) { return false; }
     virtual bool keyPress(Viewport&, QKeyEvent*) { return false; }
     // The viewport dropped the tool (another tool was set, or Escape).
-    virtual void deactivated() {}
+    virtual void deactivated() { }
 };
 
 } // namespace regio::editor

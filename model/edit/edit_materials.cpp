@@ -16,15 +16,13 @@ int materialIndex(const Scene& scene, const std::string& materialId)
     return -1;
 }
 
-
 } // namespace
 
 Check checkReflectance(const Rgb& reflectance)
 {
     for (int c = 0; c < 3; ++c)
         if (!std::isfinite(reflectance[c]) || reflectance[c] < 0.0 || reflectance[c] >= 1.0)
-            return makeError("reflectance must lie in [0, 1) on every channel, not " +
-                             std::to_string(reflectance[c]));
+            return makeError("reflectance must lie in [0, 1) on every channel, not " + std::to_string(reflectance[c]));
     return success();
 }
 
@@ -69,10 +67,9 @@ Result<RemovedMaterial> removeMaterial(Scene& scene, const std::string& material
                                  partPointer(o, p) + "/material", {object.id, part.id});
             for (int f = 0; f < int(part.faces.size()); ++f)
                 if (part.faces[size_t(f)].material == materialId)
-                    return makeError("material \"" + materialId + "\" is used by face \"" +
-                                         part.faces[size_t(f)].id + "\"",
-                                     facePointer(o, p, f) + "/material",
-                                     {object.id, part.id, part.faces[size_t(f)].id});
+                    return makeError(
+                        "material \"" + materialId + "\" is used by face \"" + part.faces[size_t(f)].id + "\"",
+                        facePointer(o, p, f) + "/material", {object.id, part.id, part.faces[size_t(f)].id});
         }
     }
     RemovedMaterial removed{std::move(scene.materials[size_t(m)]), m};

@@ -14,8 +14,8 @@ Result<int> insertObject(Scene& scene, Object object, int index)
 {
     int count = int(scene.objects.size());
     if (index < -1 || index > count)
-        return makeError("object position " + std::to_string(index) + " is out of range (0.." +
-                         std::to_string(count) + ")");
+        return makeError("object position " + std::to_string(index) + " is out of range (0.." + std::to_string(count) +
+                         ")");
     if (index == -1)
         index = count;
     std::unordered_set<std::string> taken;
@@ -23,8 +23,7 @@ Result<int> insertObject(Scene& scene, Object object, int index)
         return withPointer(check.error(), objectPointer(index) + "/id");
     taken.insert(object.id);
     for (size_t p = 0; p < object.parts.size(); ++p)
-        if (Check check = edit::checkNewPart(scene, object.parts[p],
-                                            partPointer(index, int(p)), taken); !check)
+        if (Check check = edit::checkNewPart(scene, object.parts[p], partPointer(index, int(p)), taken); !check)
             return check.error();
     scene.objects.insert(scene.objects.begin() + index, std::move(object));
     return index;
@@ -159,8 +158,8 @@ Result<ObjectLayout> restoreObjectLayout(Scene& scene, const ObjectLayout& layou
     return previous;
 }
 
-Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& partIds,
-                                const std::string& objectId, const std::string& name)
+Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& partIds, const std::string& objectId,
+                                const std::string& name)
 {
     if (partIds.empty())
         return makeError("grouping needs at least one part");
@@ -177,9 +176,8 @@ Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& pa
     // Objects that give up all their parts disappear and free their ids.
     std::unordered_set<std::string> released;
     for (const Object& object : scene.objects)
-        if (!object.parts.empty() &&
-            std::all_of(object.parts.begin(), object.parts.end(),
-                        [&](const Part& p) { return grouped.count(p.id) > 0; }))
+        if (!object.parts.empty() && std::all_of(object.parts.begin(), object.parts.end(),
+                                                 [&](const Part& p) { return grouped.count(p.id) > 0; }))
             released.insert(object.id);
     if (Check check = edit::checkNewId(scene, objectId, "object", {}, released); !check)
         return check.error();
@@ -199,8 +197,8 @@ Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& pa
     return restoreObjectLayout(scene, layout);
 }
 
-Result<ObjectLayout> groupObjects(Scene& scene, const std::vector<std::string>& objectIds,
-                                  const std::string& objectId, const std::string& name)
+Result<ObjectLayout> groupObjects(Scene& scene, const std::vector<std::string>& objectIds, const std::string& objectId,
+                                  const std::string& name)
 {
     std::vector<std::string> partIds;
     std::unordered_set<std::string> seen;
@@ -223,8 +221,8 @@ Result<ObjectLayout> ungroupObject(Scene& scene, const std::string& objectId)
         return edit::unknown("object", objectId);
     const Object& object = scene.objects[size_t(o)];
     if (object.parts.size() < 2)
-        return makeError("object \"" + objectId + "\" has only " +
-                         std::to_string(object.parts.size()) + " part; nothing to ungroup");
+        return makeError("object \"" + objectId + "\" has only " + std::to_string(object.parts.size()) +
+                         " part; nothing to ungroup");
     ObjectLayout layout = objectLayout(scene);
     std::vector<ObjectLayout::Entry> split;
     edit::IdAllocator ids(scene);
@@ -244,8 +242,7 @@ Result<ObjectLayout> ungroupObject(Scene& scene, const std::string& objectId)
     return restoreObjectLayout(scene, layout);
 }
 
-Result<std::vector<PartGeometry>> transformObject(Scene& scene, const std::string& objectId,
-                                                  const glm::dmat4& m)
+Result<std::vector<PartGeometry>> transformObject(Scene& scene, const std::string& objectId, const glm::dmat4& m)
 {
     const Object* object = scene.findObject(objectId);
     if (!object)

@@ -71,11 +71,11 @@ Result<ObjectLayout> restoreObjectLayout(Scene& scene, const ObjectLayout& layou
 // Moves the listed parts (from any objects, in the order given) into a new
 // object `objectId` placed where the first contributing object was. Objects
 // left without parts are removed. Returns the previous layout.
-Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& partIds,
-                                const std::string& objectId, const std::string& name = {});
+Result<ObjectLayout> groupParts(Scene& scene, const std::vector<std::string>& partIds, const std::string& objectId,
+                                const std::string& name = {});
 // The same with every part of the listed objects.
-Result<ObjectLayout> groupObjects(Scene& scene, const std::vector<std::string>& objectIds,
-                                  const std::string& objectId, const std::string& name = {});
+Result<ObjectLayout> groupObjects(Scene& scene, const std::vector<std::string>& objectIds, const std::string& objectId,
+                                  const std::string& name = {});
 // One object per part, in part order, where the object was. The first keeps
 // the object's id and name; the others get "<object>-<part id without the
 // object prefix>" ("table.legs" of "table" -> "table-legs") made unique, and
@@ -83,7 +83,6 @@ Result<ObjectLayout> groupObjects(Scene& scene, const std::vector<std::string>& 
 Result<ObjectLayout> ungroupObject(Scene& scene, const std::string& objectId);
 
 // Transforms every part of the object (see transformPart).
-Result<std::vector<PartGeometry>> transformObject(Scene& scene, const std::string& objectId,
-                                                  const glm::dmat4& m);
+Result<std::vector<PartGeometry>> transformObject(Scene& scene, const std::string& objectId, const glm::dmat4& m);
 
 } // namespace regio::model

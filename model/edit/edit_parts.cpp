@@ -25,8 +25,8 @@ std::vector<std::string> faceIdsOf(const Part& part)
 Check checkIndex(int index, int count, const std::string& what)
 {
     if (index < -1 || index > count)
-        return makeError(what + " position " + std::to_string(index) + " is out of range (0.." +
-                         std::to_string(count) + ")");
+        return makeError(what + " position " + std::to_string(index) + " is out of range (0.." + std::to_string(count) +
+                         ")");
     return success();
 }
 
@@ -122,15 +122,14 @@ Result<std::string> setPartMaterial(Scene& scene, const std::string& partId, std
     auto at = locatePart(scene, partId);
     if (!at.valid())
         return edit::unknown("part", partId);
-    if (Check check = edit::checkMaterialReference(scene, material,
-                                                  partPointer(at.object, at.part) + "/material"); !check)
+    if (Check check = edit::checkMaterialReference(scene, material, partPointer(at.object, at.part) + "/material");
+        !check)
         return check.error();
     std::swap(scene.objects[size_t(at.object)].parts[size_t(at.part)].material, material);
     return material;
 }
 
-Result<PartPlace> movePart(Scene& scene, const std::string& partId, const std::string& objectId,
-                           int index)
+Result<PartPlace> movePart(Scene& scene, const std::string& partId, const std::string& objectId, int index)
 {
     auto at = locatePart(scene, partId);
     if (!at.valid())
@@ -173,11 +172,11 @@ Result<std::string> setFaceMaterial(Scene& scene, const std::string& faceId, std
     auto at = scene.locateFace(faceId);
     if (!at.valid())
         return edit::unknown("face", faceId);
-    if (Check check = edit::checkMaterialReference(
-            scene, material, facePointer(at.object, at.part, at.face) + "/material"); !check)
+    if (Check check =
+            edit::checkMaterialReference(scene, material, facePointer(at.object, at.part, at.face) + "/material");
+        !check)
         return check.error();
-    std::swap(scene.objects[size_t(at.object)].parts[size_t(at.part)].faces[size_t(at.face)].material,
-              material);
+    std::swap(scene.objects[size_t(at.object)].parts[size_t(at.part)].faces[size_t(at.face)].material, material);
     return material;
 }
 
@@ -256,8 +255,8 @@ Result<std::vector<PartGeometry>> setPartGeometries(Scene& scene, std::vector<Pa
     for (const std::string& id : released)
         if (!taken.count(id))
             if (const Region* region = regionOrderingFace(scene, id))
-                return makeError("face \"" + id + "\" would disappear but the BSP order of region \"" +
-                                 region->id + "\" names it; take it out of the order first");
+                return makeError("face \"" + id + "\" would disappear but the BSP order of region \"" + region->id +
+                                 "\" names it; take it out of the order first");
     std::vector<PartGeometry> previous;
     for (size_t i = 0; i < geometries.size(); ++i) {
         Part& part = scene.objects[size_t(places[i].object)].parts[size_t(places[i].part)];
@@ -271,8 +270,7 @@ Result<std::vector<PartGeometry>> setPartGeometries(Scene& scene, std::vector<Pa
 // --- The plane cut in the scene ---------------------------------------------
 
 Result<PartSplit> splitPartInScene(Scene& scene, const std::string& partId, const Plane& plane,
-                                   const std::string& frontId, const std::string& backId,
-                                   CutCaps caps)
+                                   const std::string& frontId, const std::string& backId, CutCaps caps)
 {
     auto at = locatePart(scene, partId);
     if (!at.valid())
@@ -290,8 +288,8 @@ Result<PartSplit> splitPartInScene(Scene& scene, const std::string& partId, cons
     std::string pointer = partPointer(at.object, at.part);
     if (Check check = edit::checkNewPart(scene, cut->front, pointer, taken, released); !check)
         return check.error();
-    if (Check check = edit::checkNewPart(scene, cut->back, partPointer(at.object, at.part + 1),
-                                        taken, released); !check)
+    if (Check check = edit::checkNewPart(scene, cut->back, partPointer(at.object, at.part + 1), taken, released);
+        !check)
         return check.error();
 
     PartSplit split;
@@ -344,8 +342,7 @@ Result<Unit> unsplitPart(Scene& scene, const PartSplit& split)
             released.insert(face.id);
     }
     std::unordered_set<std::string> taken;
-    if (Check check = edit::checkNewPart(scene, split.original.part, partPointer(o, index), taken,
-                                        released); !check)
+    if (Check check = edit::checkNewPart(scene, split.original.part, partPointer(o, index), taken, released); !check)
         return check.error();
     parts.erase(parts.begin() + index, parts.begin() + index + 2);
     parts.insert(parts.begin() + index, split.original.part);

@@ -61,8 +61,7 @@ struct PartPlace {
 // Moves a part to object `objectId` at `index` of that object's parts as they
 // are after taking the part out (-1 = append); the same object reorders.
 // Returns where the part was. A source object left empty stays.
-Result<PartPlace> movePart(Scene& scene, const std::string& partId, const std::string& objectId,
-                           int index = -1);
+Result<PartPlace> movePart(Scene& scene, const std::string& partId, const std::string& objectId, int index = -1);
 
 // --- Faces -------------------------------------------------------------------
 

@@ -17,7 +17,6 @@ int regionIndex(const Scene& scene, const std::string& regionId)
     return -1;
 }
 
-
 Check checkBox(const Vec3& min, const Vec3& max, const std::string& pointer)
 {
     if (!edit::isFinite(min) || !edit::isFinite(max))
@@ -25,15 +24,13 @@ Check checkBox(const Vec3& min, const Vec3& max, const std::string& pointer)
     static const char* const kAxes[] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a)
         if (!(min[a] < max[a]))
-            return makeError(std::string("a region needs min < max on every axis (") + kAxes[a] +
-                                 ": " + std::to_string(min[a]) + " >= " + std::to_string(max[a]) +
-                                 ")",
+            return makeError(std::string("a region needs min < max on every axis (") + kAxes[a] + ": " +
+                                 std::to_string(min[a]) + " >= " + std::to_string(max[a]) + ")",
                              pointer);
     return success();
 }
 
-Check checkOrder(const Scene& scene, const std::vector<std::string>& order,
-                                     const std::string& pointer)
+Check checkOrder(const Scene& scene, const std::vector<std::string>& order, const std::string& pointer)
 {
     std::unordered_set<std::string> seen;
     for (size_t i = 0; i < order.size(); ++i) {
@@ -98,8 +95,7 @@ Result<std::string> setRegionName(Scene& scene, const std::string& regionId, std
     return name;
 }
 
-Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const Vec3& min,
-                               const Vec3& max)
+Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const Vec3& min, const Vec3& max)
 {
     int r = regionIndex(scene, regionId);
     if (r < 0)
@@ -113,8 +109,7 @@ Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const 
     return previous;
 }
 
-Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& regionId,
-                                             std::vector<std::string> order)
+Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& regionId, std::vector<std::string> order)
 {
     int r = regionIndex(scene, regionId);
     if (r < 0)
@@ -125,8 +120,7 @@ Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& re
     return order;
 }
 
-Result<int> insertBspEntry(Scene& scene, const std::string& regionId, const std::string& faceId,
-                           int index)
+Result<int> insertBspEntry(Scene& scene, const std::string& regionId, const std::string& faceId, int index)
 {
     int r = regionIndex(scene, regionId);
     if (r < 0)
@@ -168,8 +162,8 @@ Result<Unit> moveBspEntry(Scene& scene, const std::string& regionId, int from, i
     auto& order = scene.regions[size_t(r)].bspOrder;
     int count = int(order.size());
     if (from < 0 || from >= count || to < 0 || to >= count)
-        return makeError("BSP order positions " + std::to_string(from) + " -> " +
-                             std::to_string(to) + " are out of range",
+        return makeError("BSP order positions " + std::to_string(from) + " -> " + std::to_string(to) +
+                             " are out of range",
                          regionPointer(r) + "/bspOrder");
     // A rotation of the range between the two positions is exactly "take out,
     // insert at": its inverse is the rotation the other way.
@@ -212,8 +206,7 @@ void renameFaceInBspOrders(Scene& scene, const std::string& faceId, const std::s
 const Region* regionOrderingFace(const Scene& scene, const std::string& faceId)
 {
     for (const Region& region : scene.regions)
-        if (std::find(region.bspOrder.begin(), region.bspOrder.end(), faceId) !=
-            region.bspOrder.end())
+        if (std::find(region.bspOrder.begin(), region.bspOrder.end(), faceId) != region.bspOrder.end())
             return &region;
     return nullptr;
 }

@@ -42,19 +42,16 @@ struct RegionBox {
     bool operator==(const RegionBox&) const = default;
 };
 // Refuses non-finite corners and min >= max on any axis; returns the previous box.
-Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const Vec3& min,
-                               const Vec3& max);
+Result<RegionBox> setRegionBox(Scene& scene, const std::string& regionId, const Vec3& min, const Vec3& max);
 
 // --- BSP orders --------------------------------------------------------------
 
 // Replaces the whole order; every entry must name an existing face, once.
 // Returns the previous order.
-Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& regionId,
-                                             std::vector<std::string> order);
+Result<std::vector<std::string>> setBspOrder(Scene& scene, const std::string& regionId, std::vector<std::string> order);
 // Inserts `faceId` at `index` (-1 = append); refuses unknown faces and faces
 // already in the order. Returns the index used.
-Result<int> insertBspEntry(Scene& scene, const std::string& regionId, const std::string& faceId,
-                           int index = -1);
+Result<int> insertBspEntry(Scene& scene, const std::string& regionId, const std::string& faceId, int index = -1);
 
 struct BspEntry {
     std::string faceId;

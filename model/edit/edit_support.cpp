@@ -4,7 +4,6 @@
 
 namespace regio::model::edit {
 
-
 PartLocation locatePart(const Scene& scene, const std::string& partId)
 {
     for (int o = 0; o < int(scene.objects.size()); ++o) {
@@ -29,21 +28,19 @@ Diagnostic unknown(const std::string& what, const std::string& id)
     return makeError("no " + what + " with id \"" + id + "\"");
 }
 
-Check checkNewId(const Scene& scene, const std::string& id,
-                                     const std::string& what,
-                                     const std::unordered_set<std::string>& alsoTaken,
-                                     const std::unordered_set<std::string>& released)
+Check checkNewId(const Scene& scene, const std::string& id, const std::string& what,
+                 const std::unordered_set<std::string>& alsoTaken, const std::unordered_set<std::string>& released)
 {
     if (id.empty())
         return makeError("the " + what + " id must not be empty");
     if (alsoTaken.count(id) || (scene.idInUse(id) && !released.count(id)))
-        return makeError("the id \"" + id + "\" is already in use; ids must be unique across "
+        return makeError("the id \"" + id +
+                         "\" is already in use; ids must be unique across "
                          "objects, parts, faces, materials and regions");
     return success();
 }
 
-Check checkMaterialReference(const Scene& scene, const std::string& material,
-                                                 const std::string& pointer)
+Check checkMaterialReference(const Scene& scene, const std::string& material, const std::string& pointer)
 {
     if (material.empty() || scene.findMaterial(material))
         return success();
@@ -52,14 +49,12 @@ Check checkMaterialReference(const Scene& scene, const std::string& material,
 
 bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
-                                            const std::vector<Face>& faces,
-                                            const std::string& pointer)
+Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices, const std::vector<Face>& faces,
+                        const std::string& pointer)
 {
     for (size_t v = 0; v < vertices.size(); ++v)
         if (!isFinite(vertices[v]))
-            return makeError("vertex is not a finite number",
-                             pointer + "/vertices/" + std::to_string(v));
+            return makeError("vertex is not a finite number", pointer + "/vertices/" + std::to_string(v));
     for (size_t f = 0; f < faces.size(); ++f) {
         const Face& face = faces[f];
         std::string fp = pointer + "/faces/" + std::to_string(f);
@@ -67,8 +62,8 @@ Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
             return makeError("face \"" + face.id + "\" has fewer than 3 vertices", fp + "/loop");
         for (int index : face.loop)
             if (index < 0 || index >= int(vertices.size()))
-                return makeError("face \"" + face.id + "\" names vertex " + std::to_string(index) +
-                                     " of a part with " + std::to_string(vertices.size()),
+                return makeError("face \"" + face.id + "\" names vertex " + std::to_string(index) + " of a part with " +
+                                     std::to_string(vertices.size()),
                                  fp + "/loop");
         if (Check check = checkMaterialReference(scene, face.material, fp + "/material"); !check)
             return check;
@@ -76,10 +71,8 @@ Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
     return success();
 }
 
-Check checkNewPart(const Scene& scene, const Part& part,
-                                       const std::string& pointer,
-                                       std::unordered_set<std::string>& taken,
-                                       const std::unordered_set<std::string>& released)
+Check checkNewPart(const Scene& scene, const Part& part, const std::string& pointer,
+                   std::unordered_set<std::string>& taken, const std::unordered_set<std::string>& released)
 {
     if (Check check = checkNewId(scene, part.id, "part", taken, released); !check)
         return withPointer(check.error(), pointer + "/id");
@@ -103,17 +96,14 @@ std::string IdAllocator::fresh(const std::string& base)
     return id;
 }
 
-std::string IdAllocator::freshRenamed(const std::string& id, const std::string& oldPrefix,
-                                      const std::string& newPrefix)
+std::string IdAllocator::freshRenamed(const std::string& id, const std::string& oldPrefix, const std::string& newPrefix)
 {
     return fresh(replacePrefix(id, oldPrefix, newPrefix));
 }
 
-std::string replacePrefix(const std::string& id, const std::string& oldPrefix,
-                          const std::string& newPrefix)
+std::string replacePrefix(const std::string& id, const std::string& oldPrefix, const std::string& newPrefix)
 {
-    if (id.size() > oldPrefix.size() && id.compare(0, oldPrefix.size(), oldPrefix) == 0 &&
-        id[oldPrefix.size()] == '.')
+    if (id.size() > oldPrefix.size() && id.compare(0, oldPrefix.size(), oldPrefix) == 0 && id[oldPrefix.size()] == '.')
         return newPrefix + id.substr(oldPrefix.size());
     return id;
 }

@@ -29,29 +29,24 @@ Diagnostic unknown(const std::string& what, const std::string& id);
 // A new id must be non-empty and unused by any object, part, face, material or
 // region of the scene, and not in `alsoTaken` (ids claimed by the same edit).
 // Ids in `released` count as free: they belong to what the edit removes.
-Check checkNewId(const Scene& scene, const std::string& id,
-                                     const std::string& what,
-                                     const std::unordered_set<std::string>& alsoTaken = {},
-                                     const std::unordered_set<std::string>& released = {});
+Check checkNewId(const Scene& scene, const std::string& id, const std::string& what,
+                 const std::unordered_set<std::string>& alsoTaken = {},
+                 const std::unordered_set<std::string>& released = {});
 
 // A material reference is empty (inherit / none) or names an existing material.
-Check checkMaterialReference(const Scene& scene, const std::string& material,
-                                                 const std::string& pointer);
+Check checkMaterialReference(const Scene& scene, const std::string& material, const std::string& pointer);
 
 // Structural checks of a part about to enter the scene: ids (part and faces)
 // fresh and distinct, loops of at least 3 in-range vertices, finite vertices,
 // known materials. Ids claimed are added to `taken`. Geometric quality
 // (planarity, convexity) is left to validation, which reports it live.
-Check checkNewPart(const Scene& scene, const Part& part,
-                                       const std::string& pointer,
-                                       std::unordered_set<std::string>& taken,
-                                       const std::unordered_set<std::string>& released = {});
+Check checkNewPart(const Scene& scene, const Part& part, const std::string& pointer,
+                   std::unordered_set<std::string>& taken, const std::unordered_set<std::string>& released = {});
 
 // The same without the id check: the geometry (vertices, loops, face
 // materials) of a part.
-Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices,
-                                            const std::vector<Face>& faces,
-                                            const std::string& pointer);
+Check checkPartGeometry(const Scene& scene, const std::vector<Vec3>& vertices, const std::vector<Face>& faces,
+                        const std::string& pointer);
 
 bool isFinite(const Vec3& v);
 
@@ -59,13 +54,15 @@ bool isFinite(const Vec3& v);
 // ("base", "base-2", ...) also avoiding the ids handed out so far.
 class IdAllocator {
 public:
-    explicit IdAllocator(const Scene& scene) : m_scene(scene) {}
+    explicit IdAllocator(const Scene& scene)
+        : m_scene(scene)
+    {
+    }
     std::string fresh(const std::string& base);
     // Keeps `prefix` + rest, replacing an old prefix: "box1.body" with
     // oldPrefix "box1" and newPrefix "box1-2" gives "box1-2.body" (then made
     // fresh). Ids without the old prefix are only made fresh.
-    std::string freshRenamed(const std::string& id, const std::string& oldPrefix,
-                             const std::string& newPrefix);
+    std::string freshRenamed(const std::string& id, const std::string& oldPrefix, const std::string& newPrefix);
     const std::unordered_set<std::string>& taken() const { return m_taken; }
 
 private:
@@ -74,7 +71,6 @@ private:
 };
 
 // "a.b" -> newPrefix + ".b" when id starts with oldPrefix + "."; else id.
-std::string replacePrefix(const std::string& id, const std::string& oldPrefix,
-                          const std::string& newPrefix);
+std::string replacePrefix(const std::string& id, const std::string& oldPrefix, const std::string& newPrefix);
 
 } // namespace regio::model::edit

@@ -49,8 +49,8 @@ std::vector<Kept> dropCollinear(const std::vector<V2>& p, const Polygon2Loop& lo
             const V2 a = p[size_t(prev.id)], b = p[size_t(cur.id)], c = p[size_t(next.id)];
             V2 ac = c - a;
             double len = glm::length(ac);
-            if (len <= eps || std::abs(cross(ac, b - a)) / len > eps ||
-                glm::dot(b - a, ac) <= 0.0 || glm::dot(c - b, ac) <= 0.0)
+            if (len <= eps || std::abs(cross(ac, b - a)) / len > eps || glm::dot(b - a, ac) <= 0.0 ||
+                glm::dot(c - b, ac) <= 0.0)
                 continue;
             prev.after.push_back(cur.id);
             prev.after.insert(prev.after.end(), cur.after.begin(), cur.after.end());
@@ -182,8 +182,7 @@ Result<std::vector<Polygon2Loop>> earClip(const std::vector<V2>& p, Polygon2Loop
         const size_t n = v.size();
         std::vector<char> reflex(n);
         for (size_t i = 0; i < n; ++i)
-            reflex[i] = cornerHeight(p[size_t(v[(i + n - 1) % n])], p[size_t(v[i])],
-                                     p[size_t(v[(i + 1) % n])]) <= eps;
+            reflex[i] = cornerHeight(p[size_t(v[(i + n - 1) % n])], p[size_t(v[i])], p[size_t(v[(i + 1) % n])]) <= eps;
         size_t ear = n;
         for (int pass = 0; pass < 2 && ear == n; ++pass) {
             for (size_t k = 0; k < n && ear == n; ++k) {
@@ -197,19 +196,18 @@ Result<std::vector<Polygon2Loop>> earClip(const std::vector<V2>& p, Polygon2Loop
                     if (j == ia || j == i || j == ic || !reflex[j])
                         continue;
                     V2 q = p[size_t(v[j])];
-                    if (glm::length(q - a) <= eps || glm::length(q - b) <= eps ||
-                        glm::length(q - c) <= eps)
+                    if (glm::length(q - a) <= eps || glm::length(q - b) <= eps || glm::length(q - c) <= eps)
                         continue;
-                    blocked = pass == 0 ? insideOrOn(q, a, b, c, eps)
-                                        : strictlyInside(q, a, b, c, eps);
+                    blocked = pass == 0 ? insideOrOn(q, a, b, c, eps) : strictlyInside(q, a, b, c, eps);
                 }
                 if (!blocked)
                     ear = i;
             }
         }
         if (ear == n)
-            return makeError("the cut outline could not be split into convex faces "
-                             "(it is self-intersecting or degenerate)");
+            return makeError(
+                "the cut outline could not be split into convex faces "
+                "(it is self-intersecting or degenerate)");
         triangles.push_back({v[(ear + n - 1) % n], v[ear], v[(ear + 1) % n]});
         v.erase(v.begin() + std::ptrdiff_t(ear));
         start = ear == 0 ? 0 : ear - 1;
@@ -224,8 +222,7 @@ bool isConvexLoop(const std::vector<V2>& p, const Polygon2Loop& loop, double eps
 {
     const size_t n = loop.size();
     for (size_t i = 0; i < n; ++i)
-        if (cornerHeight(p[size_t(loop[(i + n - 1) % n])], p[size_t(loop[i])],
-                         p[size_t(loop[(i + 1) % n])]) < -eps)
+        if (cornerHeight(p[size_t(loop[(i + n - 1) % n])], p[size_t(loop[i])], p[size_t(loop[(i + 1) % n])]) < -eps)
             return false;
     return true;
 }
@@ -252,8 +249,7 @@ Polygon2Loop mergeAcross(const Polygon2Loop& P, const Polygon2Loop& Q, int a, in
 }
 
 // Hertel-Mehlhorn: drop every diagonal whose removal keeps the union convex.
-std::vector<Polygon2Loop> mergeConvex(const std::vector<V2>& p, std::vector<Polygon2Loop> pieces,
-                                      double eps)
+std::vector<Polygon2Loop> mergeConvex(const std::vector<V2>& p, std::vector<Polygon2Loop> pieces, double eps)
 {
     std::unordered_map<std::uint64_t, int> owner;
     for (int k = 0; k < int(pieces.size()); ++k)
@@ -305,10 +301,8 @@ double signedArea2(const std::vector<glm::dvec2>& points, const Polygon2Loop& lo
     return area;
 }
 
-Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dvec2>& points,
-                                                      const Polygon2Loop& outer,
-                                                      const std::vector<Polygon2Loop>& holes,
-                                                      double eps)
+Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dvec2>& points, const Polygon2Loop& outer,
+                                                      const std::vector<Polygon2Loop>& holes, double eps)
 {
     if (signedArea2(points, outer) <= eps * eps)
         return makeError("the cut outline is degenerate (it has no area) or runs clockwise");
@@ -364,8 +358,7 @@ Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dve
             size_t at = 0;
             while (at < piece.size() && !(piece[at] == from && piece[(at + 1) % piece.size()] == to))
                 ++at;
-            piece.insert(piece.begin() + std::ptrdiff_t(at) + 1, ring[r].after.begin(),
-                         ring[r].after.end());
+            piece.insert(piece.begin() + std::ptrdiff_t(at) + 1, ring[r].after.begin(), ring[r].after.end());
         }
     return pieces;
 }

@@ -23,10 +23,8 @@ using Polygon2Loop = std::vector<int>; // indices into the point array
 // `outer` runs counter-clockwise, each hole clockwise, none self-intersecting.
 // Returns counter-clockwise convex polygons covering the polygon exactly.
 // `eps` is the distance below which a vertex counts as on a line.
-Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dvec2>& points,
-                                                      const Polygon2Loop& outer,
-                                                      const std::vector<Polygon2Loop>& holes,
-                                                      double eps);
+Result<std::vector<Polygon2Loop>> convexDecomposition(const std::vector<glm::dvec2>& points, const Polygon2Loop& outer,
+                                                      const std::vector<Polygon2Loop>& holes, double eps);
 
 // Twice the signed area (positive = counter-clockwise).
 double signedArea2(const std::vector<glm::dvec2>& points, const Polygon2Loop& loop);

@@ -181,8 +181,8 @@ Side classifyPolygon(std::span<const Vec3> loop, const Plane& plane, double eps)
     return Side::On;
 }
 
-void splitPolygon(std::span<const Vec3> loop, const Plane& plane, std::vector<Vec3>& front,
-                  std::vector<Vec3>& back, double eps)
+void splitPolygon(std::span<const Vec3> loop, const Plane& plane, std::vector<Vec3>& front, std::vector<Vec3>& back,
+                  double eps)
 {
     front.clear();
     back.clear();

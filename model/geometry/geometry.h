@@ -15,7 +15,7 @@ inline constexpr double kAreaEpsilon = 1e-12;
 
 struct Plane {
     Vec3 normal{0.0, 0.0, 1.0}; // unit length
-    double d = 0.0;              // plane: dot(normal, p) + d = 0
+    double d = 0.0;             // plane: dot(normal, p) + d = 0
 
     double signedDistance(const Vec3& p) const;
     static Plane fromPointNormal(const Vec3& point, const Vec3& normal);
@@ -56,8 +56,8 @@ double shortestEdge(std::span<const Vec3> loop);
 Side classifyPolygon(std::span<const Vec3> loop, const Plane& plane, double eps = kDistanceEpsilon);
 // Splits a convex polygon by a plane (Sutherland-Hodgman on one plane). Either
 // output may come back empty. Vertices within eps of the plane go to both sides.
-void splitPolygon(std::span<const Vec3> loop, const Plane& plane, std::vector<Vec3>& front,
-                  std::vector<Vec3>& back, double eps = kDistanceEpsilon);
+void splitPolygon(std::span<const Vec3> loop, const Plane& plane, std::vector<Vec3>& front, std::vector<Vec3>& back,
+                  double eps = kDistanceEpsilon);
 
 // Gathers a face loop's positions from its part's vertices (indices assumed valid).
 std::vector<Vec3> loopPositions(std::span<const Vec3> vertices, std::span<const int> loop);

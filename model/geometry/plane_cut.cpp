@@ -1,7 +1,7 @@
 #include "model/geometry/plane_cut.h"
 
-#include "model/geometry/convex_decomposition.h"
 #include "model/edit/edit_support.h"
+#include "model/geometry/convex_decomposition.h"
 
 #include <glm/geometric.hpp>
 
@@ -21,7 +21,10 @@ namespace {
 // faces beside a cut edge get the same new corner although each computed it.
 class Welder {
 public:
-    explicit Welder(std::vector<Vec3>& out) : m_out(out) {}
+    explicit Welder(std::vector<Vec3>& out)
+        : m_out(out)
+    {
+    }
 
     int add(const Vec3& p)
     {
@@ -115,8 +118,7 @@ struct CutSide {
     CutSide(const CutSide&) = delete;
 
     // Adds a piece; returns false when welding collapsed it below a triangle.
-    bool addFace(const std::vector<Vec3>& positions, const std::string& id,
-                 const std::string& material)
+    bool addFace(const std::vector<Vec3>& positions, const std::string& id, const std::string& material)
     {
         std::vector<int> loop;
         for (const Vec3& p : positions) {
@@ -137,8 +139,7 @@ struct CutSide {
 // two loops touch, the walk takes the sharpest left turn about `normal`, which
 // keeps each loop on one piece of the cut instead of a figure eight.
 Result<std::vector<std::vector<int>>> chainLoops(const std::vector<Vec3>& vertices,
-                                                 std::vector<std::pair<int, int>> halfEdges,
-                                                 const Vec3& normal)
+                                                 std::vector<std::pair<int, int>> halfEdges, const Vec3& normal)
 {
     std::unordered_map<int, std::vector<size_t>> outgoing;
     for (size_t e = 0; e < halfEdges.size(); ++e)
@@ -161,8 +162,7 @@ Result<std::vector<std::vector<int>>> chainLoops(const std::vector<Vec3>& vertic
                 if (used[e])
                     continue;
                 Vec3 out = vertices[size_t(halfEdges[e].second)] - vertices[size_t(current)];
-                double turn = std::atan2(glm::dot(normal, glm::cross(incoming, out)),
-                                         glm::dot(incoming, out));
+                double turn = std::atan2(glm::dot(normal, glm::cross(incoming, out)), glm::dot(incoming, out));
                 if (turn > bestTurn) {
                     bestTurn = turn;
                     best = e;
@@ -251,8 +251,7 @@ Result<std::vector<std::string>> addCaps(CutSide& side, IdClaims& claims, const 
         for (size_t o = 0; o < outers.size(); ++o) {
             int votes = 0;
             for (size_t i = 0; i < hole.size(); ++i) {
-                glm::dvec2 mid = 0.5 * (points[size_t(hole[i])] +
-                                        points[size_t(hole[(i + 1) % hole.size()])]);
+                glm::dvec2 mid = 0.5 * (points[size_t(hole[i])] + points[size_t(hole[(i + 1) % hole.size()])]);
                 votes += containsPoint(points, outers[o], mid) ? 1 : -1;
             }
             double a = signedArea2(points, outers[o]);
@@ -262,8 +261,7 @@ Result<std::vector<std::string>> addCaps(CutSide& side, IdClaims& claims, const 
             }
         }
         if (owner == outers.size())
-            return makeError("the cut outline of \"" + side.part.id +
-                             "\" has a hole outside every outline");
+            return makeError("the cut outline of \"" + side.part.id + "\" has a hole outside every outline");
         holesOf[owner].push_back(std::move(hole));
     }
 
@@ -286,8 +284,7 @@ Result<std::vector<std::string>> addCaps(CutSide& side, IdClaims& claims, const 
 
 } // namespace
 
-std::string cutPieceId(const std::string& faceId, const std::string& sourcePartId,
-                       const std::string& newPartId)
+std::string cutPieceId(const std::string& faceId, const std::string& sourcePartId, const std::string& newPartId)
 {
     std::string renamed = edit::replacePrefix(faceId, sourcePartId, newPartId);
     return renamed != faceId || sourcePartId == newPartId ? renamed : newPartId + "." + faceId;
@@ -322,8 +319,7 @@ Result<PlaneCut> splitPart(const Part& source, const Plane& inputPlane, const st
         back |= s < -kDistanceEpsilon;
     }
     if (!front || !back)
-        return makeError("the plane misses \"" + source.id +
-                         "\": the whole part lies on one side of it");
+        return makeError("the plane misses \"" + source.id + "\": the whole part lies on one side of it");
 
     CutSide sides[2];
     sides[0].part.id = frontId;
@@ -347,12 +343,8 @@ Result<PlaneCut> splitPart(const Part& source, const Plane& inputPlane, const st
                 pieces.pieceIds.push_back(id);
         };
         switch (classifyPolygon(positions, plane)) {
-        case Side::Front:
-            add(0, positions);
-            break;
-        case Side::Back:
-            add(1, positions);
-            break;
+        case Side::Front: add(0, positions); break;
+        case Side::Back: add(1, positions); break;
         case Side::On:
             // The solid lies on the side the face's normal points away from.
             add(glm::dot(polygonNormal(positions), plane.normal) < 0.0 ? 0 : 1, positions);

@@ -58,11 +58,10 @@ struct PlaneCut {
 // Refused (with a diagnostic) when the ids are empty or equal, the plane is
 // not finite, the part has a broken loop, or the plane misses the part (no
 // vertex strictly on each side; touching a face or an edge counts as missing).
-Result<PlaneCut> splitPart(const Part& part, const Plane& plane, const std::string& frontId,
-                           const std::string& backId, CutCaps caps = CutCaps::Close);
+Result<PlaneCut> splitPart(const Part& part, const Plane& plane, const std::string& frontId, const std::string& backId,
+                           CutCaps caps = CutCaps::Close);
 
 // The id rule above, for one face: `faceId` of `sourcePartId` moved to `newPartId`.
-std::string cutPieceId(const std::string& faceId, const std::string& sourcePartId,
-                       const std::string& newPartId);
+std::string cutPieceId(const std::string& faceId, const std::string& sourcePartId, const std::string& newPartId);
 
 } // namespace regio::model

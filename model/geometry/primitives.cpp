@@ -38,30 +38,26 @@ Part boxPart(const std::string& id, const Vec3& min, const Vec3& max, const std:
     part.id = id;
     part.material = material;
     for (int k = 0; k < 8; ++k)
-        part.vertices.push_back(
-            {(k & 1) ? max.x : min.x, (k & 2) ? max.y : min.y, (k & 4) ? max.z : min.z});
+        part.vertices.push_back({(k & 1) ? max.x : min.x, (k & 2) ? max.y : min.y, (k & 4) ? max.z : min.z});
     // Counter-clockwise seen from outside: e.g. nx runs 0 -> 4 (+z) -> 6 (+y),
     // and z cross y = -x.
     part.faces = {
-        {id + ".nx", {0, 4, 6, 2}, {}}, {id + ".px", {1, 3, 7, 5}, {}},
-        {id + ".ny", {0, 1, 5, 4}, {}}, {id + ".py", {2, 6, 7, 3}, {}},
-        {id + ".nz", {0, 2, 3, 1}, {}}, {id + ".pz", {4, 5, 7, 6}, {}},
+        {id + ".nx", {0, 4, 6, 2}, {}}, {id + ".px", {1, 3, 7, 5}, {}}, {id + ".ny", {0, 1, 5, 4}, {}},
+        {id + ".py", {2, 6, 7, 3}, {}}, {id + ".nz", {0, 2, 3, 1}, {}}, {id + ".pz", {4, 5, 7, 6}, {}},
     };
     return part;
 }
 
 } // namespace
 
-Result<Part> makeBox(const std::string& id, const Vec3& min, const Vec3& max,
-                     const std::string& material)
+Result<Part> makeBox(const std::string& id, const Vec3& min, const Vec3& max, const std::string& material)
 {
     if (Check check = checkBox(id, min, max); !check)
         return check.error();
     return boxPart(id, min, max, material);
 }
 
-Result<Part> makeRoom(const std::string& id, const Vec3& min, const Vec3& max,
-                      const std::string& material)
+Result<Part> makeRoom(const std::string& id, const Vec3& min, const Vec3& max, const std::string& material)
 {
     if (Check check = checkBox(id, min, max); !check)
         return check.error();
@@ -73,8 +69,8 @@ Result<Part> makeRoom(const std::string& id, const Vec3& min, const Vec3& max,
     return part;
 }
 
-Result<Part> makePrism(const std::string& id, int sides, double radius, double height,
-                       const Vec3& baseCenter, const std::string& material)
+Result<Part> makePrism(const std::string& id, int sides, double radius, double height, const Vec3& baseCenter,
+                       const std::string& material)
 {
     if (Check check = checkId(id); !check)
         return check.error();
@@ -91,8 +87,8 @@ Result<Part> makePrism(const std::string& id, int sides, double radius, double h
     for (int ring = 0; ring < 2; ++ring)
         for (int i = 0; i < sides; ++i) {
             double angle = 2.0 * std::numbers::pi * i / sides;
-            part.vertices.push_back(baseCenter + Vec3{radius * std::cos(angle), ring * height,
-                                                      radius * std::sin(angle)});
+            part.vertices.push_back(baseCenter +
+                                    Vec3{radius * std::cos(angle), ring * height, radius * std::sin(angle)});
         }
     Face bottom{id + ".bottom", {}, {}};
     Face top{id + ".top", {}, {}};
@@ -110,8 +106,7 @@ Result<Part> makePrism(const std::string& id, int sides, double radius, double h
     return part;
 }
 
-Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max,
-                       const std::string& material)
+Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max, const std::string& material)
 {
     if (Check check = checkBox(id, min, max); !check)
         return check.error();
@@ -126,11 +121,8 @@ Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max,
         part.vertices.push_back({max.x, max.y, z});
     }
     part.faces = {
-        {id + ".bottom", {0, 1, 4, 3}, {}},
-        {id + ".slope", {0, 3, 5, 2}, {}},
-        {id + ".px", {1, 2, 5, 4}, {}},
-        {id + ".nz", {0, 2, 1}, {}},
-        {id + ".pz", {3, 4, 5}, {}},
+        {id + ".bottom", {0, 1, 4, 3}, {}}, {id + ".slope", {0, 3, 5, 2}, {}}, {id + ".px", {1, 2, 5, 4}, {}},
+        {id + ".nz", {0, 2, 1}, {}},        {id + ".pz", {3, 4, 5}, {}},
     };
     return part;
 }
@@ -142,22 +134,20 @@ Result<Part> makeWedge(const std::string& id, const Vec3& min, const Vec3& max,
 // the clean winged-edge topology and the mesher's strips. Boxes are closed,
 // manifold and convex-faced by construction, and as a whole-part object the
 // flight still moves, groups and ungroups as one.
-Result<Object> makeStairs(const std::string& id, int steps, double width, double depth,
-                          double height, const Vec3& origin, const std::string& material)
+Result<Object> makeStairs(const std::string& id, int steps, double width, double depth, double height,
+                          const Vec3& origin, const std::string& material)
 {
     if (Check check = checkId(id); !check)
         return check.error();
     if (steps < 1 || steps > 1000)
         return makeError("stairs need 1 to 1000 steps, not " + std::to_string(steps));
-    if (!positiveFinite(width) || !positiveFinite(depth) || !positiveFinite(height) ||
-        !edit::isFinite(origin))
+    if (!positiveFinite(width) || !positiveFinite(depth) || !positiveFinite(height) || !edit::isFinite(origin))
         return makeError("the width, depth and height of \"" + id + "\" must be positive numbers");
     Object object;
     object.id = id;
     for (int i = 0; i < steps; ++i) {
         Vec3 min{origin.x, origin.y, origin.z + depth * i / steps};
-        Vec3 max{origin.x + width, origin.y + height * (i + 1) / steps,
-                 origin.z + depth * (i + 1) / steps};
+        Vec3 max{origin.x + width, origin.y + height * (i + 1) / steps, origin.z + depth * (i + 1) / steps};
         object.parts.push_back(boxPart(id + ".step" + std::to_string(i + 1), min, max, material));
     }
     return object;

@@ -1,8 +1,8 @@
 #include "model/geometry/region_clip.h"
 
+#include "model/geometry/winged_edge.h"
 #include "model/validation/validation.h"
 #include "model/validation/validation_detail.h"
-#include "model/geometry/winged_edge.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -140,9 +140,13 @@ std::optional<std::pair<int, double>> separatingPlane(const std::vector<Box3>& b
 // falls apart into one piece per region cell it reaches, then cuts away what
 // sticks out of the cell's box (that lies outside every region).
 struct Clipper {
-    Clipper(Scene& sceneToCut, const std::vector<Box3>& regionBoxes, const std::string& clippedPartId,
-            CutCaps cutCaps, RegionClip& clipRecord)
-        : scene(sceneToCut), boxes(regionBoxes), partId(clippedPartId), capping(cutCaps), record(clipRecord)
+    Clipper(Scene& sceneToCut, const std::vector<Box3>& regionBoxes, const std::string& clippedPartId, CutCaps cutCaps,
+            RegionClip& clipRecord)
+        : scene(sceneToCut)
+        , boxes(regionBoxes)
+        , partId(clippedPartId)
+        , capping(cutCaps)
+        , record(clipRecord)
     {
     }
 
@@ -157,8 +161,7 @@ struct Clipper {
 
     // Cuts `current` by `plane`; the front piece (kept at the part's place
     // in its object) and the back piece come back.
-    Check cut(const std::string& current, const Plane& plane, std::string& front,
-                                  std::string& back)
+    Check cut(const std::string& current, const Plane& plane, std::string& front, std::string& back)
     {
         front = temporaryId(scene, partId, counter);
         back = temporaryId(scene, partId, counter); // the counter moved on
@@ -200,8 +203,8 @@ struct Clipper {
 
         const auto plane = separatingPlane(boxes, group);
         if (!plane)
-            return makeError("the regions overlap or interlock, so no plane separates them; fix the regions first",
-                             "", {partId});
+            return makeError("the regions overlap or interlock, so no plane separates them; fix the regions first", "",
+                             {partId});
         const auto [axis, position] = *plane;
         std::vector<int> low, high;
         for (int r : group)

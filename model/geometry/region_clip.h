@@ -47,14 +47,14 @@ bool faceTouchesRegionBox(std::span<const Vec3> loop, const Box3& box);
 bool partStraddlesRegions(const Scene& scene, const Part& part);
 
 struct RegionClip {
-    std::string partId;                  // the part that was clipped
-    std::vector<PartSplit> splits;       // in the order applied
+    std::string partId;            // the part that was clipped
+    std::vector<PartSplit> splits; // in the order applied
     // Final renames (temporary piece ids -> region names), in the order applied.
     std::vector<std::pair<std::string, std::string>> partRenames;
     std::vector<std::pair<std::string, std::string>> faceRenames;
-    BspOrderSnapshots bspOrders;         // orders before pieces outside their region left them
-    std::vector<std::string> pieces;     // the resulting parts, in object order
-    std::vector<std::string> capFaces;   // faces of the pieces made by the cuts (closed parts only)
+    BspOrderSnapshots bspOrders;       // orders before pieces outside their region left them
+    std::vector<std::string> pieces;   // the resulting parts, in object order
+    std::vector<std::string> capFaces; // faces of the pieces made by the cuts (closed parts only)
 
     bool operator==(const RegionClip&) const = default;
 };

@@ -16,15 +16,15 @@ Check checkAffineTransform(const glm::dmat4& m)
                 return makeError("the transform contains a number that is not finite");
     // glm is column-major: m[c][3] is the bottom row.
     if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
-        return makeError("only affine transforms (move, rotate, scale, shear, mirror) keep faces "
-                         "planar; this one is projective");
+        return makeError(
+            "only affine transforms (move, rotate, scale, shear, mirror) keep faces "
+            "planar; this one is projective");
     // Relative test: a scale of 1e-3 on every axis (mm from m) must pass, a
     // flattening of one axis must not.
     glm::dmat3 linear(m);
     double scale = 0.0;
     for (int c = 0; c < 3; ++c)
-        scale = std::max(scale, std::abs(linear[c][0]) + std::abs(linear[c][1]) +
-                                    std::abs(linear[c][2]));
+        scale = std::max(scale, std::abs(linear[c][0]) + std::abs(linear[c][1]) + std::abs(linear[c][2]));
     if (scale == 0.0 || std::abs(glm::determinant(linear)) < 1e-12 * scale * scale * scale)
         return makeError("the transform flattens the part (its determinant is zero)");
     return success();

@@ -17,8 +17,7 @@ std::uint64_t edgeKey(int a, int b)
 bool touches(const WingedEdgeMesh::Edge& edge, int v) { return edge.v0 == v || edge.v1 == v; }
 
 // Appends the loop problems of one face; true when the loop is usable.
-bool checkLoop(int face, const std::vector<int>& loop, int vertexCount,
-               std::vector<TopologyProblem>& problems)
+bool checkLoop(int face, const std::vector<int>& loop, int vertexCount, std::vector<TopologyProblem>& problems)
 {
     bool usable = true;
     if (loop.size() < 3) {
@@ -27,8 +26,7 @@ bool checkLoop(int face, const std::vector<int>& loop, int vertexCount,
     }
     for (size_t i = 0; i < loop.size(); ++i) {
         if (loop[i] < 0 || loop[i] >= vertexCount) {
-            problems.push_back(
-                {TopologyProblem::Kind::VertexOutOfRange, face, int(i), -1, {}});
+            problems.push_back({TopologyProblem::Kind::VertexOutOfRange, face, int(i), -1, {}});
             usable = false;
         }
     }
@@ -144,8 +142,11 @@ void WingedEdgeMesh::buildEdges(std::span<const std::vector<int>> loops)
             edge.rightFace = m_edgeUseFace[size_t(begin) + 1];
             if (m_edgeUseForward[size_t(begin) + 1]) {
                 ++m_windingProblems;
-                m_problems.push_back({TopologyProblem::Kind::InconsistentWinding, edge.rightFace,
-                                      -1, int(e), {edge.leftFace, edge.rightFace}});
+                m_problems.push_back({TopologyProblem::Kind::InconsistentWinding,
+                                      edge.rightFace,
+                                      -1,
+                                      int(e),
+                                      {edge.leftFace, edge.rightFace}});
             }
         } else if (count > 2) {
             ++m_nonManifoldEdges;
@@ -217,8 +218,7 @@ void WingedEdgeMesh::buildVertexFans()
         if (manifold) {
             std::vector<int> fan = walkFan(int(v), nullptr);
             std::sort(fan.begin(), fan.end());
-            manifold = int(fan.size()) == degree &&
-                       std::adjacent_find(fan.begin(), fan.end()) == fan.end();
+            manifold = int(fan.size()) == degree && std::adjacent_find(fan.begin(), fan.end()) == fan.end();
         }
         m_vertexManifold[v] = manifold ? 1 : 0;
     }
@@ -433,8 +433,7 @@ bool WingedEdgeMesh::isManifold() const
 {
     if (m_nonManifoldEdges > 0)
         return false;
-    return std::all_of(m_vertexManifold.begin(), m_vertexManifold.end(),
-                       [](char manifold) { return manifold != 0; });
+    return std::all_of(m_vertexManifold.begin(), m_vertexManifold.end(), [](char manifold) { return manifold != 0; });
 }
 
 WingedEdgeMesh::WindingRepair WingedEdgeMesh::windingRepair() const

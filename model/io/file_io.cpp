@@ -18,7 +18,11 @@ std::string errnoText(int error) { return std::strerror(error); }
 
 class FileDescriptor {
 public:
-    explicit FileDescriptor(int fd = -1, bool owned = true) : m_fd(fd), m_owned(owned) {}
+    explicit FileDescriptor(int fd = -1, bool owned = true)
+        : m_fd(fd)
+        , m_owned(owned)
+    {
+    }
     ~FileDescriptor() { reset(); }
     FileDescriptor(const FileDescriptor&) = delete;
     FileDescriptor& operator=(const FileDescriptor&) = delete;
@@ -87,7 +91,7 @@ FileDescriptor createTemporary(const std::string& target, std::string& tempPath,
 // Writing through a symbolic link replaces the file it points to, not the link.
 std::string resolveTarget(const std::string& path)
 {
-    struct stat info {};
+    struct stat info { };
     if (::lstat(path.c_str(), &info) == 0 && S_ISLNK(info.st_mode)) {
         std::error_code ec;
         const std::filesystem::path resolved = std::filesystem::canonical(path, ec);
@@ -99,16 +103,15 @@ std::string resolveTarget(const std::string& path)
 
 std::string tooLarge(std::uint64_t maxBytes, std::string_view kind, std::int64_t size = -1)
 {
-    const std::string limit = maxBytes % (std::uint64_t{1} << 30) == 0
-                                  ? std::to_string(maxBytes >> 30) + " GiB"
-                                  : std::to_string(maxBytes) + " bytes";
+    const std::string limit = maxBytes % (std::uint64_t{1} << 30) == 0 ? std::to_string(maxBytes >> 30) + " GiB"
+                                                                       : std::to_string(maxBytes) + " bytes";
     return "file too large (" + (size >= 0 ? std::to_string(size) + " bytes; " : std::string()) + std::string(kind) +
            "s are limited to " + limit + ")";
 }
 
 Result<std::string> readDescriptor(const FileDescriptor& file, std::uint64_t maxBytes, std::string_view kind)
 {
-    struct stat info {};
+    struct stat info { };
     if (::fstat(file.get(), &info) != 0)
         return makeError("cannot read: " + errnoText(errno));
     if (S_ISDIR(info.st_mode))
@@ -169,7 +172,7 @@ Check writeFileAtomically(const std::string& path, std::string_view bytes, std::
     if (directory.empty())
         directory = ".";
 
-    struct stat existing {};
+    struct stat existing { };
     const bool exists = ::stat(target.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode))
         return fail("the path is a directory", EISDIR);

@@ -40,10 +40,7 @@ void setTextPosition(std::string_view text, std::size_t offset, Diagnostic& diag
     diagnostic.column = column;
 }
 
-std::string formatNumber(double value)
-{
-    return json(value).dump();
-}
+std::string formatNumber(double value) { return json(value).dump(); }
 
 namespace {
 
@@ -82,8 +79,7 @@ Check prescan(std::string_view text)
             while (i < text.size() && isNumberChar(text[i]))
                 ++i;
             if (i - start > kMaxNumberLength)
-                return refuse(start, "number longer than " + std::to_string(kMaxNumberLength) +
-                                         " characters");
+                return refuse(start, "number longer than " + std::to_string(kMaxNumberLength) + " characters");
         } else if (isWhitespace(c)) {
             while (i < text.size() && isWhitespace(text[i]))
                 ++i;
@@ -92,8 +88,7 @@ Check prescan(std::string_view text)
         } else {
             if (c == '[' || c == '{') {
                 if (++depth > kMaxNestingDepth)
-                    return refuse(i, "arrays and objects nested deeper than " +
-                                         std::to_string(kMaxNestingDepth) +
+                    return refuse(i, "arrays and objects nested deeper than " + std::to_string(kMaxNestingDepth) +
                                          " levels (a scene needs 7)");
             } else if ((c == ']' || c == '}') && depth > 0) {
                 --depth;
@@ -145,7 +140,10 @@ std::size_t tokenStart(std::string_view text, std::size_t end)
 // number can say where it is) and reports duplicate keys.
 class DocumentBuilder : public nlohmann::json_sax<json> {
 public:
-    explicit DocumentBuilder(std::string_view text) : m_text(text) {}
+    explicit DocumentBuilder(std::string_view text)
+        : m_text(text)
+    {
+    }
 
     bool null() override { return add(json(nullptr)); }
     bool boolean(bool value) override { return add(json(value)); }
@@ -166,15 +164,13 @@ public:
         level.key = key;
         level.memberOpen = true;
         if (level.value->contains(key))
-            m_diagnostics.push_back(makeError("duplicate key \"" + excerpt(key) + "\"",
-                                              pointerHere()));
+            m_diagnostics.push_back(makeError("duplicate key \"" + excerpt(key) + "\"", pointerHere()));
         m_member = &(*level.value)[key];
         *m_member = nullptr;
         return true;
     }
 
-    bool parse_error(std::size_t position, const std::string& lastToken,
-                     const nlohmann::detail::exception& ex) override
+    bool parse_error(std::size_t position, const std::string& lastToken, const nlohmann::detail::exception& ex) override
     {
         std::string message;
         if (ex.id == 406) {
@@ -319,8 +315,8 @@ constexpr int kFirstSceneFormatVersion = 1;
 bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
 {
     if (!document.is_object()) {
-        diagnostics.push_back(makeError(
-            "expected a JSON object with \"format\": \"regio-scene\"; this is not a Regio scene"));
+        diagnostics.push_back(
+            makeError("expected a JSON object with \"format\": \"regio-scene\"; this is not a Regio scene"));
         return false;
     }
     const auto format = document.find("format");
@@ -330,8 +326,7 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
         return false;
     }
     if (!format->is_string() || format->get_ref<const std::string&>() != kSceneFormatTag) {
-        diagnostics.push_back(makeError(
-            "expected \"regio-scene\"; this is not a Regio scene", "/format"));
+        diagnostics.push_back(makeError("expected \"regio-scene\"; this is not a Regio scene", "/format"));
         return false;
     }
     const auto versionValue = document.find("version");
@@ -353,8 +348,7 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
     if (version > kSceneFormatVersion) {
         diagnostics.push_back(makeError(
             "scene format version " + (integer ? std::to_string(version) : versionValue->dump()) +
-                " is newer than this Regio supports (" + std::to_string(kSceneFormatVersion) +
-                "); update Regio",
+                " is newer than this Regio supports (" + std::to_string(kSceneFormatVersion) + "); update Regio",
             "/version"));
         return false;
     }
@@ -368,9 +362,8 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
     for (auto v = static_cast<int>(version); v < kSceneFormatVersion; ++v) {
         const auto step = migrations().find(v);
         if (step == migrations().end()) {
-            diagnostics.push_back(makeError("scene format version " + std::to_string(v) +
-                                                " can no longer be read",
-                                            "/version"));
+            diagnostics.push_back(
+                makeError("scene format version " + std::to_string(v) + " can no longer be read", "/version"));
             return false;
         }
         step->second(document, diagnostics);

@@ -35,12 +35,14 @@ namespace {
 
 class Reader {
 public:
-    explicit Reader(Diagnostics& diagnostics) : m_diagnostics(diagnostics) {}
+    explicit Reader(Diagnostics& diagnostics)
+        : m_diagnostics(diagnostics)
+    {
+    }
 
     void read(const json& document, Scene& scene)
     {
-        checkKeys(document, "",
-                  {"format", "version", "materials", "objects", "regions", "solver", "camera"});
+        checkKeys(document, "", {"format", "version", "materials", "objects", "regions", "solver", "camera"});
         if (const json* materials = arrayMember(document, "", "materials", Required::Yes)) {
             for (std::size_t i = 0; i < materials->size(); ++i)
                 readMaterial((*materials)[i], appendPointer("/materials", i), scene.materials.emplace_back());
@@ -66,7 +68,8 @@ private:
     // so the editor can select the culprit.
     class IdScope {
     public:
-        IdScope(Reader& reader, const std::string& id) : m_reader(reader)
+        IdScope(Reader& reader, const std::string& id)
+            : m_reader(reader)
         {
             m_reader.m_idPath.push_back(id);
         }
@@ -89,21 +92,18 @@ private:
 
     // Unknown keys are warnings: a file from a newer minor revision still
     // loads, and the user learns that those values will not be saved.
-    void checkKeys(const json& object, const std::string& pointer,
-                   std::initializer_list<std::string_view> known)
+    void checkKeys(const json& object, const std::string& pointer, std::initializer_list<std::string_view> known)
     {
         for (const auto& [key, value] : object.items()) {
             bool isKnown = false;
             for (std::string_view k : known)
                 isKnown = isKnown || k == key;
             if (!isKnown)
-                warning(appendPointer(pointer, key),
-                        "unknown key \"" + key + "\" is ignored and will not be saved");
+                warning(appendPointer(pointer, key), "unknown key \"" + key + "\" is ignored and will not be saved");
         }
     }
 
-    const json* member(const json& object, const std::string& pointer, const char* key,
-                       Required required)
+    const json* member(const json& object, const std::string& pointer, const char* key, Required required)
     {
         const auto it = object.find(key);
         if (it == object.end()) {
@@ -122,8 +122,7 @@ private:
         return false;
     }
 
-    const json* arrayMember(const json& object, const std::string& pointer, const char* key,
-                            Required required)
+    const json* arrayMember(const json& object, const std::string& pointer, const char* key, Required required)
     {
         const json* value = member(object, pointer, key, required);
         if (value && !value->is_array()) {
@@ -133,8 +132,8 @@ private:
         return value;
     }
 
-    bool readString(const json& object, const std::string& pointer, const char* key,
-                    Required required, std::string& out)
+    bool readString(const json& object, const std::string& pointer, const char* key, Required required,
+                    std::string& out)
     {
         const json* value = member(object, pointer, key, required);
         if (!value)
@@ -175,8 +174,7 @@ private:
         return true;
     }
 
-    bool readInteger(const json& object, const std::string& pointer, const char* key,
-                     std::int64_t& out)
+    bool readInteger(const json& object, const std::string& pointer, const char* key, std::int64_t& out)
     {
         const json* value = member(object, pointer, key, Required::No);
         if (!value)
@@ -190,8 +188,7 @@ private:
         return true;
     }
 
-    bool readVec3(const json& object, const std::string& pointer, const char* key,
-                  Required required, Vec3& out)
+    bool readVec3(const json& object, const std::string& pointer, const char* key, Required required, Vec3& out)
     {
         const json* value = member(object, pointer, key, required);
         if (!value)
@@ -276,21 +273,18 @@ private:
             const std::string here = pointer + "/vertices";
             part.vertices.reserve(vertices->size());
             for (std::size_t i = 0; i < vertices->size(); ++i)
-                verticesOk &= readVec3Value((*vertices)[i], appendPointer(here, i),
-                                            part.vertices.emplace_back(0.0));
+                verticesOk &= readVec3Value((*vertices)[i], appendPointer(here, i), part.vertices.emplace_back(0.0));
         }
         if (const json* faces = arrayMember(value, pointer, "faces", Required::Yes)) {
             for (std::size_t i = 0; i < faces->size(); ++i)
                 readFace((*faces)[i], appendPointer(pointer + "/faces", i), part,
-                         verticesOk ? static_cast<std::int64_t>(part.vertices.size()) : -1,
-                         part.faces.emplace_back());
+                         verticesOk ? static_cast<std::int64_t>(part.vertices.size()) : -1, part.faces.emplace_back());
         }
     }
 
     // `vertexCount` < 0: the part's vertices are broken, so indices cannot be
     // range-checked (their error is reported already).
-    void readFace(const json& value, const std::string& pointer, const Part& part,
-                  std::int64_t vertexCount, Face& face)
+    void readFace(const json& value, const std::string& pointer, const Part& part, std::int64_t vertexCount, Face& face)
     {
         if (!expectObject(value, pointer))
             return;
@@ -310,9 +304,8 @@ private:
                 continue;
             }
             if (vertexCount >= 0 && (*index < 0 || *index >= vertexCount)) {
-                error(appendPointer(here, i),
-                      "vertex index " + std::to_string(*index) + " is out of range (part \"" +
-                          part.id + "\" has " + std::to_string(vertexCount) + " vertices)");
+                error(appendPointer(here, i), "vertex index " + std::to_string(*index) + " is out of range (part \"" +
+                                                  part.id + "\" has " + std::to_string(vertexCount) + " vertices)");
                 continue;
             }
             if (*index < 0 || *index > INT32_MAX) {
@@ -350,18 +343,16 @@ private:
         if (!expectObject(value, pointer))
             return;
         checkKeys(value, pointer,
-                  {"hemicube", "patchSize", "elementsPerPatch", "adaptive", "maxIterations",
-                   "convergence", "visibility", "regions"});
+                  {"hemicube", "patchSize", "elementsPerPatch", "adaptive", "maxIterations", "convergence",
+                   "visibility", "regions"});
         std::int64_t integer = 0;
         double number = 0.0;
         // The sides of the hemicube are N x N/2 (paper §5.6), so N is even; the
         // cap keeps the item buffers of a hostile file within memory.
         if (readInteger(value, pointer, "hemicube", integer)) {
             if (integer < kMinHemicube || integer > kMaxHemicube || integer % 2 != 0)
-                error(pointer + "/hemicube", "expected an even integer from " +
-                                                 std::to_string(kMinHemicube) + " to " +
-                                                 std::to_string(kMaxHemicube) +
-                                                 " (the hemicube sides are N x N/2)");
+                error(pointer + "/hemicube", "expected an even integer from " + std::to_string(kMinHemicube) + " to " +
+                                                 std::to_string(kMaxHemicube) + " (the hemicube sides are N x N/2)");
             else
                 solver.hemicube = static_cast<int>(integer);
         }
@@ -382,15 +373,13 @@ private:
             readAdaptive(*adaptive, pointer + "/adaptive", solver.adaptive);
         if (readInteger(value, pointer, "maxIterations", integer)) {
             if (integer < 0 || integer > INT32_MAX)
-                error(pointer + "/maxIterations",
-                      "expected an integer from 0 to " + std::to_string(INT32_MAX));
+                error(pointer + "/maxIterations", "expected an integer from 0 to " + std::to_string(INT32_MAX));
             else
                 solver.maxIterations = static_cast<int>(integer);
         }
         if (readNumber(value, pointer, "convergence", number)) {
             if (number < 0.0 || number > 1.0)
-                error(pointer + "/convergence",
-                      "expected a fraction of the emitted power from 0 to 1");
+                error(pointer + "/convergence", "expected a fraction of the emitted power from 0 to 1");
             else
                 solver.convergence = number;
         }

@@ -17,10 +17,7 @@ using nlohmann::ordered_json;
 
 namespace {
 
-ordered_json vec3(const Vec3& v)
-{
-    return ordered_json::array({v.x, v.y, v.z});
-}
+ordered_json vec3(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
 
 ordered_json materialToJson(const Material& material)
 {

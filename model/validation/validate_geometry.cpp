@@ -1,8 +1,8 @@
 // Validation of the parts: vertices, face loops, face geometry (planar, convex,
 // not degenerate) and part topology from the winged-edge structure (paper §4).
+#include "model/geometry/winged_edge.h"
 #include "model/validation/validation.h"
 #include "model/validation/validation_detail.h"
-#include "model/geometry/winged_edge.h"
 
 #include <glm/geometric.hpp>
 
@@ -30,8 +30,7 @@ void reportLoopProblem(ValidationContext& context, size_t o, size_t p, const Top
     const std::vector<std::string> path = facePath(context, o, p, f);
     switch (problem.kind) {
     case TopologyProblem::Kind::LoopTooShort:
-        context.error(name + " has " + std::to_string(face.loop.size()) +
-                          " loop vertices; a face needs at least 3",
+        context.error(name + " has " + std::to_string(face.loop.size()) + " loop vertices; a face needs at least 3",
                       loopPointer, path);
         break;
     case TopologyProblem::Kind::VertexOutOfRange:
@@ -49,13 +48,11 @@ void reportLoopProblem(ValidationContext& context, size_t o, size_t p, const Top
                       loopPointer + "/" + std::to_string(problem.loopPosition), path);
         break;
     }
-    default:
-        break;
+    default: break;
     }
 }
 
-void validateFaceGeometry(ValidationContext& context, size_t o, size_t p, size_t f,
-                          std::span<const Vec3> positions)
+void validateFaceGeometry(ValidationContext& context, size_t o, size_t p, size_t f, std::span<const Vec3> positions)
 {
     const std::string name = "face " + quoted(context.part(int(o), int(p)).faces[f].id);
     const std::string pointer = facePointer(o, p, f);
@@ -89,8 +86,9 @@ void validateFaceGeometry(ValidationContext& context, size_t o, size_t p, size_t
                         pointer, facePath(context, o, p, f));
 
     if (!isConvex(positions, newell / (2.0 * area)))
-        context.error(name + " is not convex; the solver's BSP trees and patch strips need convex "
-                             "faces: split it into convex pieces",
+        context.error(name +
+                          " is not convex; the solver's BSP trees and patch strips need convex "
+                          "faces: split it into convex pieces",
                       pointer, facePath(context, o, p, f));
     else if (area < kSliverRatio * size * size)
         context.warning(name + " is a sliver (" + formatValue(area) + " m\u00b2 over " + formatLength(size) +
@@ -144,9 +142,8 @@ void validateTopology(ValidationContext& context, size_t o, size_t p, const Wing
                 const size_t f = size_t(problem.face);
                 context.error("faces " + quoted(part.faces[size_t(problem.faces[0])].id) + " and " +
                                   quoted(part.faces[f].id) + " run through their shared edge (" +
-                                  vertexPair(mesh.edge(problem.edge)) +
-                                  ") in the same direction, and part " + quoted(part.id) +
-                                  " is one-sided: no choice of windings makes it consistent",
+                                  vertexPair(mesh.edge(problem.edge)) + ") in the same direction, and part " +
+                                  quoted(part.id) + " is one-sided: no choice of windings makes it consistent",
                               facePointer(o, p, f), facePath(context, o, p, f));
             }
         }

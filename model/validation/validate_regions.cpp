@@ -66,8 +66,7 @@ std::vector<Box3> checkRegionBoxes(ValidationContext& context)
         for (const char* key : {"min", "max"}) {
             const Vec3& corner = key[1] == 'i' ? region.min : region.max;
             if (!isFinite(corner)) {
-                context.error(name + ": " + key + " is not a finite point", regionPointer(r) + "/" + key,
-                              {region.id});
+                context.error(name + ": " + key + " is not a finite point", regionPointer(r) + "/" + key, {region.id});
                 ok = false;
             }
         }
@@ -76,8 +75,7 @@ std::vector<Box3> checkRegionBoxes(ValidationContext& context)
             for (int a = 0; a < 3 && ok; ++a) {
                 if (region.min[a] >= region.max[a]) {
                     context.error(name + " is empty: its min " + kAxis[a] + " (" + formatValue(region.min[a]) +
-                                      ") is not below its max " + kAxis[a] + " (" +
-                                      formatValue(region.max[a]) + ")",
+                                      ") is not below its max " + kAxis[a] + " (" + formatValue(region.max[a]) + ")",
                                   regionPointer(r), {region.id});
                     ok = false;
                 }
@@ -120,9 +118,8 @@ void checkRegionLayout(ValidationContext& context, const std::vector<Box3>& boxe
             continue;
         bool split = false;
         for (int axis = 0; axis < 3 && !split; ++axis) {
-            std::sort(group.begin(), group.end(), [&](int a, int b) {
-                return boxes[size_t(a)].min[axis] < boxes[size_t(b)].min[axis];
-            });
+            std::sort(group.begin(), group.end(),
+                      [&](int a, int b) { return boxes[size_t(a)].min[axis] < boxes[size_t(b)].min[axis]; });
             double reach = -INFINITY;
             for (size_t i = 0; i + 1 < group.size(); ++i) {
                 reach = std::max(reach, boxes[size_t(group[i])].max[axis]);
@@ -193,22 +190,22 @@ void checkPartsInRegions(ValidationContext& context, const std::vector<Box3>& bo
             }
             bool outsideAll = false;
             for (size_t v = 0; v < used.size() && !outsideAll; ++v)
-                if (used[v] && std::none_of(boxes.begin(), boxes.end(), [&](const Box3& box) {
-                        return box.contains(part.vertices[v]);
-                    }))
+                if (used[v] && std::none_of(boxes.begin(), boxes.end(),
+                                            [&](const Box3& box) { return box.contains(part.vertices[v]); }))
                     outsideAll = true;
 
             const std::string name = "part " + quoted(part.id);
             if (touched.empty()) {
-                context.warning(name + " lies outside every region; the solver still files it in the "
-                                       "regional-tree cell on its side of the separating planes, but no "
-                                       "region box or BSP order covers it: enlarge a region or add one",
+                context.warning(name +
+                                    " lies outside every region; the solver still files it in the "
+                                    "regional-tree cell on its side of the separating planes, but no "
+                                    "region box or BSP order covers it: enlarge a region or add one",
                                 partPointer(o, p), partPath(context, o, p));
             } else {
-                context.warning(name + (touched.size() == 1 ? " straddles the boundary of region "
-                                                            : " straddles the boundaries of regions ") +
-                                    quotedList(touched) +
-                                    (outsideAll ? " and partly lies outside every region" : "") +
+                context.warning(name +
+                                    (touched.size() == 1 ? " straddles the boundary of region "
+                                                         : " straddles the boundaries of regions ") +
+                                    quotedList(touched) + (outsideAll ? " and partly lies outside every region" : "") +
                                     ": the solver will clip it at the separating planes",
                                 partPointer(o, p), partPath(context, o, p));
             }

@@ -9,7 +9,6 @@ namespace regio::model {
 
 namespace detail {
 
-
 std::vector<std::string> partPath(const ValidationContext& context, size_t o, size_t p)
 {
     const Object& object = context.scene.objects[o];
@@ -88,14 +87,13 @@ void validateIds(ValidationContext& context)
     seen.reserve(context.faceIndex.size() + scene.materials.size() + scene.regions.size());
     auto claim = [&](const std::string& id, const Use& use) {
         if (id.empty()) {
-            context.error(std::string("the ") + use.kind + " has an empty id", pointerOf(use) + "/id",
-                          idPathOf(use));
+            context.error(std::string("the ") + use.kind + " has an empty id", pointerOf(use) + "/id", idPathOf(use));
             return;
         }
         auto [it, fresh] = seen.try_emplace(id, use);
         if (!fresh)
-            context.error("duplicate id " + detail::quoted(id) + ": already used by the " + it->second.kind +
-                              " at " + pointerOf(it->second),
+            context.error("duplicate id " + detail::quoted(id) + ": already used by the " + it->second.kind + " at " +
+                              pointerOf(it->second),
                           pointerOf(use) + "/id", idPathOf(use));
     };
     for (size_t m = 0; m < scene.materials.size(); ++m)
@@ -127,8 +125,7 @@ void buildIndices(ValidationContext& context)
         const auto& parts = scene.objects[o].parts;
         for (size_t p = 0; p < parts.size(); ++p)
             for (size_t f = 0; f < parts[p].faces.size(); ++f)
-                context.faceIndex.try_emplace(parts[p].faces[f].id,
-                                              detail::FaceLocation{int(o), int(p), int(f)});
+                context.faceIndex.try_emplace(parts[p].faces[f].id, detail::FaceLocation{int(o), int(p), int(f)});
     }
 }
 
@@ -143,8 +140,7 @@ void validateMaterials(ValidationContext& context)
             const double r = material.reflectance[c];
             const std::string at = pointer + "/reflectance/" + std::to_string(c);
             if (!std::isfinite(r))
-                context.error(name + ": the " + kChannel[c] + " reflectance is not a finite number", at,
-                              {material.id});
+                context.error(name + ": the " + kChannel[c] + " reflectance is not a finite number", at, {material.id});
             else if (r < 0.0)
                 context.error(name + ": the " + kChannel[c] + " reflectance " + detail::formatValue(r) +
                                   " is negative; reflectance lies in [0, 1)",
@@ -159,8 +155,7 @@ void validateMaterials(ValidationContext& context)
             const double e = material.emission[c];
             const std::string at = pointer + "/emission/" + std::to_string(c);
             if (!std::isfinite(e))
-                context.error(name + ": the " + kChannel[c] + " emission is not a finite number", at,
-                              {material.id});
+                context.error(name + ": the " + kChannel[c] + " emission is not a finite number", at, {material.id});
             else if (e < 0.0)
                 context.error(name + ": the " + kChannel[c] + " emission " + detail::formatValue(e) +
                                   " is negative; a surface cannot absorb light it was never given",
@@ -203,8 +198,7 @@ void validateMaterialUse(ValidationContext& context)
                     if (!material)
                         context.error("face " + detail::quoted(face.id) + " uses the unknown material " +
                                           detail::quoted(face.material),
-                                      facePointer(o, p, f) + "/material",
-                                      detail::facePath(context, o, p, f));
+                                      facePointer(o, p, f) + "/material", detail::facePath(context, o, p, f));
                 } else if (part.material.empty()) {
                     context.error("face " + detail::quoted(face.id) + " has no material, and neither has part " +
                                       detail::quoted(part.id) + ": give one to either",
@@ -215,9 +209,10 @@ void validateMaterialUse(ValidationContext& context)
         }
     }
     if (!anyEmitter)
-        context.warning("no face emits light (no face uses a material with emission above 0): "
-                        "there is nothing to solve",
-                        "", {});
+        context.warning(
+            "no face emits light (no face uses a material with emission above 0): "
+            "there is nothing to solve",
+            "", {});
 }
 
 } // namespace

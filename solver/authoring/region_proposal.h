@@ -47,7 +47,7 @@ struct RegionProposalOptions {
     // shell is ever cut). On the generated room of 100 objects cutting 9
     // parts gave 37 regions and 1500 fragments against 3 regions and 2472.
     bool cutParts = true;
-    bool suggestOrders = true;       // fill each region's bspOrder with the suggested order
+    bool suggestOrders = true; // fill each region's bspOrder with the suggested order
     SuggestOptions suggest;
 };
 

@@ -29,8 +29,7 @@ void split(std::vector<FacePolygon> polygons, const Box3& box, int threshold, do
         centres.push_back(model::polygonCentroid(p.loop)[axis]);
     auto middle = centres.begin() + std::ptrdiff_t(centres.size() / 2);
     std::nth_element(centres.begin(), middle, centres.end());
-    const double position =
-        std::clamp(*middle, box.min[axis] + 0.25 * size[axis], box.max[axis] - 0.25 * size[axis]);
+    const double position = std::clamp(*middle, box.min[axis] + 0.25 * size[axis], box.max[axis] - 0.25 * size[axis]);
 
     std::vector<FacePolygon> front, back;
     partitionAtSeparatingPlane(std::move(polygons), axis, position, back, front);
@@ -43,10 +42,7 @@ void split(std::vector<FacePolygon> polygons, const Box3& box, int threshold, do
 
 } // namespace
 
-double estimatedPatches(double area, double patchSize)
-{
-    return std::max(1.0, 2.0 * area / (patchSize * patchSize));
-}
+double estimatedPatches(double area, double patchSize) { return std::max(1.0, 2.0 * area / (patchSize * patchSize)); }
 
 std::vector<Box3> autoRegionBoxes(const std::vector<FacePolygon>& polygons, const Box3& bounds, int patchThreshold,
                                   double patchSize)

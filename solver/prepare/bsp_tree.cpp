@@ -13,7 +13,10 @@ namespace {
 class Builder {
 public:
     Builder(PreparedScene& scene, int region, std::span<const int> rank, double eps)
-        : m_scene(scene), m_region(region), m_rank(rank), m_eps(eps)
+        : m_scene(scene)
+        , m_region(region)
+        , m_rank(rank)
+        , m_eps(eps)
     {
     }
 

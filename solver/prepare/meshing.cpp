@@ -18,7 +18,11 @@ namespace {
 // face that meet along them.
 class EdgePoints {
 public:
-    EdgePoints(std::vector<Vec3>& vertices, int divisions) : m_vertices(vertices), m_k(divisions) {}
+    EdgePoints(std::vector<Vec3>& vertices, int divisions)
+        : m_vertices(vertices)
+        , m_k(divisions)
+    {
+    }
 
     void clear() { m_edges.clear(); }
 
@@ -43,15 +47,11 @@ private:
     std::unordered_map<std::uint64_t, int> m_edges;
 };
 
-double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    return 0.5 * glm::length(glm::cross(b - a, c - a));
-}
+double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); }
 
 void addElement(PreparedScene& scene, const Patch& patch, int patchIndex, std::array<int, 3> v)
 {
-    const Vec3 &a = scene.vertices[size_t(v[0])], &b = scene.vertices[size_t(v[1])],
-               &c = scene.vertices[size_t(v[2])];
+    const Vec3 &a = scene.vertices[size_t(v[0])], &b = scene.vertices[size_t(v[1])], &c = scene.vertices[size_t(v[2])];
     Element e;
     e.vertices = v;
     e.patch = patchIndex;

@@ -26,8 +26,6 @@ struct Work {
     bool centred = false; // has points inside its edges: triangulated around its centroid
 };
 
-
-
 struct CutKey {
     int lo = 0, hi = 0, plane = 0;
     bool operator==(const CutKey&) const = default;
@@ -124,8 +122,7 @@ private:
     }
 
     // model::splitPolygon on index loops: vertices within eps go to both sides.
-    void split(const Work& piece, const Plane& plane, int planeKey, std::vector<Work>& front,
-               std::vector<Work>& back)
+    void split(const Work& piece, const Plane& plane, int planeKey, std::vector<Work>& front, std::vector<Work>& back)
     {
         const size_t n = piece.loop.size();
         m_distance.resize(n);
@@ -337,9 +334,8 @@ void PieceBuilder::insertEdgePoints(Work& piece)
             continue;
         grew = true;
         const Vec3 pa = vertex(a), d = vertex(b) - pa;
-        std::sort(inner.begin(), inner.end(), [&](int x, int y) {
-            return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d);
-        });
+        std::sort(inner.begin(), inner.end(),
+                  [&](int x, int y) { return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d); });
         inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
         loop.insert(loop.end(), inner.begin(), inner.end());
     }

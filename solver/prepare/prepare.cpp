@@ -81,9 +81,9 @@ model::Result<FaceSet> collectFaces(const model::Scene& scene)
                     loop = model::loopPositions(part.vertices, face.loop);
                 const double area = indicesValid ? model::polygonArea(loop) : 0.0;
                 if (!indicesValid || area <= model::kAreaEpsilon) {
-                    diagnostics.push_back(model::makeWarning(
-                        "face '" + face.id + "' has no area; it is left out of the solution", pointer + "/loop",
-                        idPath));
+                    diagnostics.push_back(
+                        model::makeWarning("face '" + face.id + "' has no area; it is left out of the solution",
+                                           pointer + "/loop", idPath));
                     out.faces.push_back(std::move(info));
                     out.properties.push_back(props);
                     continue;
@@ -92,9 +92,9 @@ model::Result<FaceSet> collectFaces(const model::Scene& scene)
                 for (Vec3& v : loop)
                     v -= props.plane.normal * props.plane.signedDistance(v);
                 if (!model::isConvex(loop, props.plane.normal)) {
-                    diagnostics.push_back(
-                        model::makeError("face '" + face.id + "' is not convex; the solver needs convex faces (split it)",
-                                         pointer + "/loop", idPath));
+                    diagnostics.push_back(model::makeError(
+                        "face '" + face.id + "' is not convex; the solver needs convex faces (split it)",
+                        pointer + "/loop", idPath));
                 }
                 info.area = area;
                 std::vector<Vec3> clean = cleanConvexLoop(loop);

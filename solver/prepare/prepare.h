@@ -55,7 +55,7 @@ struct FaceSet {
     // downstream is exactly planar) and cleaned of repeated and straight-line
     // vertices; FacePolygon::face indexes `faces`.
     std::vector<FacePolygon> polygons;
-    Box3 bounds;                        // of the polygons
+    Box3 bounds; // of the polygons
 };
 
 // Refused (errors): a face without a known material, a non-convex face.
@@ -65,9 +65,9 @@ model::Result<FaceSet> collectFaces(const model::Scene& scene);
 // --- Stage 2: the regions ------------------------------------------------------
 
 struct RegionLayout {
-    std::vector<Region> regions;                // id and box (the rest comes with the BSP trees)
+    std::vector<Region> regions;                  // id and box (the rest comes with the BSP trees)
     std::vector<std::vector<std::string>> orders; // per region: the face ids ranked first as BSP roots
-    RegionalTree tree;                          // §5.2
+    RegionalTree tree;                            // §5.2
 };
 
 // The boxes of `mode` (authored, none: one box around everything, auto: see
@@ -88,7 +88,7 @@ struct BspInput {
     // Per region: the face polygons in its cell, clipped at the separating
     // planes (assignToCells).
     std::vector<std::vector<FacePolygon>> cells;
-    double patchSize = 0.0;     // the settings the scene is to be meshed with
+    double patchSize = 0.0; // the settings the scene is to be meshed with
     int elementsPerPatch = 0;
 };
 

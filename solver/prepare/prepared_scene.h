@@ -78,10 +78,10 @@ using model::Vec3;
 // There is exactly one Properties per input face, at the same index as the
 // face in PreparedScene::faces (hot data here, names and bookkeeping there).
 struct Properties {
-    Plane plane;            // the input face's plane; normal = the face's front side
-    Rgb reflectance{0.0};   // diffuse coefficient per channel
-    Rgb emission{0.0};      // radiant exitance per unit area (W/m^2 per channel)
-    int face = -1;          // index into PreparedScene::faces (== this index)
+    Plane plane;          // the input face's plane; normal = the face's front side
+    Rgb reflectance{0.0}; // diffuse coefficient per channel
+    Rgb emission{0.0};    // radiant exitance per unit area (W/m^2 per channel)
+    int face = -1;        // index into PreparedScene::faces (== this index)
     // The face belongs to a closed part with volume (a solid: every edge has
     // two faces, at least four faces). Where such a face shows its back on a
     // coplanar receiver, the receiver faces into the solid there (a box
@@ -93,13 +93,13 @@ struct Properties {
 // the solver cannot use (zero area) are kept with area 0 and no elements, so
 // per-face results can still be reported for every id of the file.
 struct InputFace {
-    std::string id;        // the face id of the file
-    int object = -1;       // indices into model::Scene::objects / parts / faces
+    std::string id;  // the face id of the file
+    int object = -1; // indices into model::Scene::objects / parts / faces
     int part = -1;
     int faceInPart = -1;
-    double area = 0.0;     // area of the input polygon
+    double area = 0.0;         // area of the input polygon
     std::vector<Vec3> polygon; // the convex polygon the solver meshes (on the plane); empty if unused
-    int firstPatch = 0;    // its patches: [firstPatch, firstPatch + patchCount)
+    int firstPatch = 0;        // its patches: [firstPatch, firstPatch + patchCount)
     int patchCount = 0;
     std::vector<int> elements; // every element that makes up this face (any order)
 };
@@ -110,8 +110,8 @@ struct Fragment {
     int properties = -1;
     int node = -1;
     int region = -1;
-    int firstPoint = 0;    // polygon in PreparedScene::fragmentPoints, CCW seen
-    int pointCount = 0;    // from its properties' plane normal
+    int firstPoint = 0; // polygon in PreparedScene::fragmentPoints, CCW seen
+    int pointCount = 0; // from its properties' plane normal
     double area = 0.0;
 };
 
@@ -119,8 +119,8 @@ struct Fragment {
 struct Patch {
     std::array<int, 3> vertices{}; // indices into PreparedScene::vertices, CCW from the normal
     int properties = -1;
-    int node = -1;                 // = node of its first element (a patch may span several nodes)
-    int firstElement = 0;          // its elements: [firstElement, firstElement + elementCount)
+    int node = -1;        // = node of its first element (a patch may span several nodes)
+    int firstElement = 0; // its elements: [firstElement, firstElement + elementCount)
     int elementCount = 0;
     double area = 0.0;
     Vec3 centroid{0.0};
@@ -131,10 +131,10 @@ struct Element {
     std::array<int, 3> vertices{}; // indices into PreparedScene::vertices, CCW from the normal
     int patch = -1;
     int properties = -1;
-    int node = -1;                 // node of its first piece (an element cut by a plane has pieces in several)
+    int node = -1; // node of its first piece (an element cut by a plane has pieces in several)
     double area = 0.0;
     Vec3 centroid{0.0};
-    Vec3 normal{0.0};              // = properties' plane normal (copied for locality)
+    Vec3 normal{0.0}; // = properties' plane normal (copied for locality)
 };
 
 // A triangle of an element's part inside one BSP node's cell (see the top of
@@ -147,8 +147,8 @@ struct Piece {
 // A node of a region's BSP tree (§5.3). All fragments on the node plane (both
 // orientations) live here; children are node indices, -1 = empty half-space.
 struct BspNode {
-    Plane plane;          // plane of the first (root) fragment's face
-    int front = -1;       // subtree on the side the plane normal points to
+    Plane plane;    // plane of the first (root) fragment's face
+    int front = -1; // subtree on the side the plane normal points to
     int back = -1;
     int region = -1;
     int firstFragment = 0, fragmentCount = 0, forwardFragments = 0;
@@ -166,12 +166,12 @@ struct RegionStats {
 };
 
 struct Region {
-    std::string id;    // authored region id; "auto-<n>" for automatic regions; "scene" when there are none
-    Box3 box;          // the region box (authored, automatic, or the scene bounds)
+    std::string id; // authored region id; "auto-<n>" for automatic regions; "scene" when there are none
+    Box3 box;       // the region box (authored, automatic, or the scene bounds)
     // Bounds of what the region's cell actually holds. A face outside every
     // authored box still lands in some cell, so culling must use this, not `box`.
     Box3 bounds;
-    int bspRoot = -1;  // -1 = the cell holds nothing
+    int bspRoot = -1; // -1 = the cell holds nothing
     RegionStats stats;
 };
 
@@ -188,40 +188,40 @@ struct RegionalNode {
 };
 
 struct PrepareStats {
-    int inputFaces = 0;      // faces of the scene with non-zero area
-    int regionPieces = 0;    // polygons after clipping by the separating planes
-    int fragments = 0;       // after BSP splitting, all regions
-    int splits = 0;          // BSP splits, all regions
-    int maxDepth = 0;        // deepest region BSP tree
+    int inputFaces = 0;   // faces of the scene with non-zero area
+    int regionPieces = 0; // polygons after clipping by the separating planes
+    int fragments = 0;    // after BSP splitting, all regions
+    int splits = 0;       // BSP splits, all regions
+    int maxDepth = 0;     // deepest region BSP tree
     int patches = 0;
     int elements = 0;
-    int pieces = 0;          // piece triangles painted (solver/prepare/pieces.h)
+    int pieces = 0; // piece triangles painted (solver/prepare/pieces.h)
     // Element pieces that found no node holding their face (rounding). They
     // would be missing from the hemicube; tests assert there are none.
     int lostPieces = 0;
     double lostPieceArea = 0.0;
-    double area = 0.0;       // total element area (= total input face area)
+    double area = 0.0; // total element area (= total input face area)
 };
 
 struct PreparedScene {
-    std::vector<InputFace> faces;          // scene order
-    std::vector<Properties> properties;    // same index as faces
+    std::vector<InputFace> faces;       // scene order
+    std::vector<Properties> properties; // same index as faces
 
     std::vector<RegionalNode> regionalNodes;
-    int regionalRoot = -1;                 // -1 only for an empty scene
+    int regionalRoot = -1; // -1 only for an empty scene
     std::vector<Region> regions;
 
     std::vector<BspNode> nodes;
     std::vector<Fragment> fragments;
     std::vector<Vec3> fragmentPoints;
-    std::vector<Vec3> vertices;            // patch and element corners
+    std::vector<Vec3> vertices; // patch and element corners
     std::vector<Patch> patches;
     std::vector<Element> elements;
-    std::vector<Vec3> pieceVertices;       // a copy of `vertices`, then the split points of pieces
+    std::vector<Vec3> pieceVertices; // a copy of `vertices`, then the split points of pieces
     std::vector<Piece> pieces;
 
-    Box3 bounds;                           // of all geometry
-    double patchSize = 0.5;                // the settings it was meshed with
+    Box3 bounds;            // of all geometry
+    double patchSize = 0.5; // the settings it was meshed with
     int elementsPerPatch = 4;
     PrepareStats stats;
 };

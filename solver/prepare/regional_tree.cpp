@@ -24,9 +24,8 @@ struct Split {
 void searchAxis(std::span<const Box3> boxes, const std::vector<int>& set, int axis, double eps, Split& best)
 {
     std::vector<int> sorted = set;
-    std::stable_sort(sorted.begin(), sorted.end(), [&](int a, int b) {
-        return boxes[size_t(a)].min[axis] < boxes[size_t(b)].min[axis];
-    });
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [&](int a, int b) { return boxes[size_t(a)].min[axis] < boxes[size_t(b)].min[axis]; });
     double reach = boxes[size_t(sorted[0])].max[axis];
     for (size_t i = 0; i + 1 < sorted.size(); ++i) {
         reach = std::max(reach, boxes[size_t(sorted[i])].max[axis]);

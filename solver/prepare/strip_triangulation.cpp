@@ -35,7 +35,8 @@ double cross2(const Vec2& a, const Vec2& b, const Vec2& c)
 
 class StripBuilder {
 public:
-    StripBuilder(std::span<const Vec2> polygon, double patchSize) : m_patchSize(patchSize)
+    StripBuilder(std::span<const Vec2> polygon, double patchSize)
+        : m_patchSize(patchSize)
     {
         m_mesh.points.assign(polygon.begin(), polygon.end());
         double extent = 0.0;

@@ -35,8 +35,8 @@ using Vec2 = glm::dvec2;
 using Triangle = std::array<int, 3>;
 
 struct StripMesh2D {
-    std::vector<Vec2> points;         // the input corners first, in input order, then new points
-    std::vector<Triangle> triangles;  // counter-clockwise, indices into points
+    std::vector<Vec2> points;        // the input corners first, in input order, then new points
+    std::vector<Triangle> triangles; // counter-clockwise, indices into points
 };
 
 // `polygon` is convex and counter-clockwise, without repeated or collinear
@@ -44,8 +44,8 @@ struct StripMesh2D {
 StripMesh2D stripTriangulate2D(std::span<const Vec2> polygon, double patchSize);
 
 struct StripMesh {
-    std::vector<model::Vec3> points;  // the input corners first (bit-identical), then new points
-    std::vector<Triangle> triangles;  // counter-clockwise seen from `normal`
+    std::vector<model::Vec3> points; // the input corners first (bit-identical), then new points
+    std::vector<Triangle> triangles; // counter-clockwise seen from `normal`
 };
 
 // The 3D entry: `loop` convex, counter-clockwise around the unit `normal`.

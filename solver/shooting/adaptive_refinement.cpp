@@ -7,9 +7,11 @@ namespace regio::solver {
 
 AdaptiveRefinement::AdaptiveRefinement(const PreparedScene& initial, const model::AdaptiveSettings& settings,
                                        const RefinementPolicy& policy)
-    : m_settings(settings), m_policy(policy), m_hierarchy(initial),
-      m_initialElements(static_cast<int>(initial.elements.size())),
-      m_activeElements(static_cast<int>(initial.elements.size()))
+    : m_settings(settings)
+    , m_policy(policy)
+    , m_hierarchy(initial)
+    , m_initialElements(static_cast<int>(initial.elements.size()))
+    , m_activeElements(static_cast<int>(initial.elements.size()))
 {
 }
 
@@ -33,8 +35,7 @@ void AdaptiveRefinement::startRound(std::span<const Rgb> radiosity, std::span<co
     // The hand-over: the shooter's state goes back into the hierarchy first.
     if (!m_mesh) {
         m_mesh = std::make_unique<AdaptiveMesh>(m_hierarchy, std::vector<Rgb>(radiosity.begin(), radiosity.end()),
-                                                std::vector<Rgb>(unshot.begin(), unshot.end()),
-                                                m_settings.anchoring);
+                                                std::vector<Rgb>(unshot.begin(), unshot.end()), m_settings.anchoring);
         m_sourceElement.resize(radiosity.size());
         std::iota(m_sourceElement.begin(), m_sourceElement.end(), 0);
     } else {
@@ -49,8 +50,8 @@ void AdaptiveRefinement::startRound(std::span<const Rgb> radiosity, std::span<co
 bool AdaptiveRefinement::selectSlice()
 {
     Round& round = *m_round;
-    const size_t end = std::min(round.active.size(),
-                                round.scanned + static_cast<size_t>(std::max(1, m_policy.selectSliceSize)));
+    const size_t end =
+        std::min(round.active.size(), round.scanned + static_cast<size_t>(std::max(1, m_policy.selectSliceSize)));
     // The §5.7 criterion (AdaptiveMesh::selectBySubdivisionCriterion), with
     // the contrast kept for the ranking. The mesh does not change while the
     // round selects, so slices judge exactly what one pass would.
@@ -96,8 +97,8 @@ AdaptiveRefinement::Outcome AdaptiveRefinement::runRound(std::span<const Rgb> ra
     const int limit = roundLimit();
     while (round.next < round.candidates.size() && m_activeElements < limit) {
         const size_t count = std::min(slice, round.candidates.size() - round.next);
-        const int splits = m_mesh->subdivide(std::span<const int>(round.candidates).subspan(round.next, count),
-                                             m_settings.minEdge);
+        const int splits =
+            m_mesh->subdivide(std::span<const int>(round.candidates).subspan(round.next, count), m_settings.minEdge);
         // Each split makes one active element four.
         m_activeElements += 3 * splits;
         round.splits += splits;

@@ -31,8 +31,8 @@
 // copied), so the shooter that was spent is carried by interpolation, never
 // re-shot, and the energy books stay exact.
 #include "model/scene.h"
-#include "solver/shooting/adaptive_subdivision.h"
 #include "solver/prepare/prepared_scene.h"
+#include "solver/shooting/adaptive_subdivision.h"
 
 #include <atomic>
 #include <memory>
@@ -45,8 +45,8 @@ namespace regio::solver {
 struct RefinementPolicy {
     int roundInterval = 16;
     int maxRounds = 8;
-    double growthLimit = 4.0; // active elements <= growthLimit x initial elements
-    int sliceSize = 64;   // candidates split between two looks at the cancel flag
+    double growthLimit = 4.0;   // active elements <= growthLimit x initial elements
+    int sliceSize = 64;         // candidates split between two looks at the cancel flag
     int selectSliceSize = 2048; // elements judged by the criterion between two looks
 };
 
@@ -69,13 +69,12 @@ public:
     // when resuming: no shot happened since). Refined: takeActiveScene() has
     // the new mesh. Settled: nothing was split (criterion met everywhere,
     // minEdge, or the budget).
-    Outcome runRound(std::span<const Rgb> radiosity, std::span<const Rgb> unshot,
-                     const std::atomic<bool>* cancel);
+    Outcome runRound(std::span<const Rgb> radiosity, std::span<const Rgb> unshot, const std::atomic<bool>* cancel);
     // The active scene after a Refined round, with its state, to hand to the
     // shooter (Shooting::replaceElementState).
     ActiveScene takeActiveScene();
 
-    int rounds() const { return m_rounds; }           // rounds that split something
+    int rounds() const { return m_rounds; } // rounds that split something
     int initialElements() const { return m_initialElements; }
     int elementLimit() const { return static_cast<int>(m_initialElements * m_policy.growthLimit); }
     // What the round under way (or the next one) may grow the mesh to.
@@ -90,7 +89,7 @@ private:
         size_t scanned = 0;                           // of `active`, judged so far
         std::vector<std::pair<double, int>> selected; // (contrast, element) meeting the criterion
         bool ranked = false;
-        std::vector<int> candidates;                  // hierarchy elements, by falling contrast
+        std::vector<int> candidates; // hierarchy elements, by falling contrast
         size_t next = 0;
         int splits = 0;
     };

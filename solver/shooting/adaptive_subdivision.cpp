@@ -11,10 +11,13 @@
 
 namespace regio::solver {
 
-AdaptiveMesh::AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std::vector<Rgb> unshot,
-                           bool anchoring)
-    : m_scene(scene), m_anchoring(anchoring), m_levels(scene.elements.size()),
-      m_radiosity(std::move(radiosity)), m_unshot(std::move(unshot)), m_faces(scene.faces.size())
+AdaptiveMesh::AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std::vector<Rgb> unshot, bool anchoring)
+    : m_scene(scene)
+    , m_anchoring(anchoring)
+    , m_levels(scene.elements.size())
+    , m_radiosity(std::move(radiosity))
+    , m_unshot(std::move(unshot))
+    , m_faces(scene.faces.size())
 {
     if (m_radiosity.size() != scene.elements.size() || m_unshot.size() != scene.elements.size())
         throw std::invalid_argument("AdaptiveMesh: one radiosity and one unshot value per element expected");
@@ -193,7 +196,8 @@ bool AdaptiveMesh::canSplitImpl(int element, double minEdge, int depth) const
         return false;
     const auto& v = m_scene.elements[size_t(element)].vertices;
     for (int k = 0; k < 3; ++k) {
-        const double len = glm::length(m_scene.vertices[size_t(v[size_t(k)])] - m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]);
+        const double len =
+            glm::length(m_scene.vertices[size_t(v[size_t(k)])] - m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]);
         if (0.5 * len < minEdge * (1.0 - 1e-9))
             return false;
     }
@@ -287,8 +291,8 @@ void AdaptiveMesh::splitNow(int element)
     }
     std::array<Rgb, 4> childRadiosity;
     for (int ch = 0; ch < 3; ++ch) {
-        const auto values = childValues(m_radiosity[size_t(element)][ch],
-                                        {edgeValue[0][ch], edgeValue[1][ch], edgeValue[2][ch]});
+        const auto values =
+            childValues(m_radiosity[size_t(element)][ch], {edgeValue[0][ch], edgeValue[1][ch], edgeValue[2][ch]});
         for (int i = 0; i < 4; ++i)
             childRadiosity[size_t(i)][ch] = values[size_t(i)];
     }
@@ -312,9 +316,10 @@ void AdaptiveMesh::splitNow(int element)
         // The 4 midpoint children are congruent: exactly a quarter each (a
         // division by 4 is exact), so the areas sum to the parent's exactly.
         child.area = parent.area / 4.0;
-        child.centroid = (m_scene.vertices[size_t(corners[size_t(i)][0])] + m_scene.vertices[size_t(corners[size_t(i)][1])] +
-                          m_scene.vertices[size_t(corners[size_t(i)][2])]) /
-                         3.0;
+        child.centroid =
+            (m_scene.vertices[size_t(corners[size_t(i)][0])] + m_scene.vertices[size_t(corners[size_t(i)][1])] +
+             m_scene.vertices[size_t(corners[size_t(i)][2])]) /
+            3.0;
         const int index = int(m_scene.elements.size());
         m_scene.elements.push_back(child);
         ElementLevel childLevel;

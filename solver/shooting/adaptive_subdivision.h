@@ -73,8 +73,7 @@ public:
     // order. The scene is grown in place and must outlive this object.
     // `anchoring` is model::AdaptiveSettings::anchoring.
     // Throws std::invalid_argument when the counts do not match.
-    AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std::vector<Rgb> unshot,
-                 bool anchoring = true);
+    AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std::vector<Rgb> unshot, bool anchoring = true);
 
     const PreparedScene& scene() const { return m_scene; }
     bool anchoring() const { return m_anchoring; }

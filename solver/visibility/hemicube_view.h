@@ -4,10 +4,10 @@
 // visibility (painter or z-buffer) that a shot of that patch uses, so that a
 // tool can show what the form factors of that shot are made of. Nothing of
 // the solver's state changes; the caller owns the scene for the duration.
+#include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
-#include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/visibility.h"
 
 #include <optional>

@@ -28,8 +28,8 @@ PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shoo
                 for (int i = begin; i < end; ++i) {
                     const int element = scene.pieces[size_t(i)].element;
                     PaintStep* last = out.steps.empty() ? nullptr : &out.steps.back();
-                    if (last && last->element == element && last->node == nodeIndex && last->receives == receives
-                        && last->firstPiece + last->pieceCount == i)
+                    if (last && last->element == element && last->node == nodeIndex && last->receives == receives &&
+                        last->firstPiece + last->pieceCount == i)
                         ++last->pieceCount;
                     else
                         out.steps.push_back({element, nodeIndex, node.region, receives, i, 1});

@@ -23,10 +23,10 @@
 // shooter's frame and outcoded once per shooter, whatever number of elements
 // share it (docs/performance.md).
 #include "model/scene.h"
+#include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
-#include "solver/prepare/prepared_scene.h"
 
 #include <atomic>
 #include <cstdint>
@@ -49,14 +49,14 @@ inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
         op(begin, forwardEnd, true);               // F: receivers
         op(oppositeSolidBegin, end, false);        // O solid: blockers
     } else {
-        op(forwardSolidEnd, forwardEnd, false);    // F open: blockers
-        op(forwardEnd, end, true);                 // O: receivers
-        op(begin, forwardSolidEnd, false);         // F solid: blockers
+        op(forwardSolidEnd, forwardEnd, false); // F open: blockers
+        op(forwardEnd, end, true);              // O: receivers
+        op(begin, forwardSolidEnd, false);      // F solid: blockers
     }
 }
 
 struct VisibilityStats {
-    std::int64_t regionsCulled = 0;  // whole regions skipped (behind the shooter plane)
+    std::int64_t regionsCulled = 0; // whole regions skipped (behind the shooter plane)
     // Counted per painted piece triangle (solver/prepare/pieces.h); most elements are
     // one piece.
     std::int64_t elementsVisited = 0;

@@ -20,8 +20,8 @@
 // medians the summary prints. Not a test: timings are never pass/fail.
 #include "model/io/scene_json.h"
 #include "model/validation/validation.h"
-#include "solver/shooting/adaptive_refinement.h"
 #include "solver/prepare/prepare.h"
+#include "solver/shooting/adaptive_refinement.h"
 #include "solver/shooting/shooting.h"
 #include "solver/solver.h"
 #include "support/sample_scenes.h"
@@ -43,10 +43,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 const model::Scene& scene()
 {

@@ -152,8 +152,22 @@ void zbuffer(benchmark::State& state) { table1(state, model::Visibility::ZBuffer
 
 // One iteration = 100 shots from a fresh solver; the solver's construction
 // (scene preparation) is outside the manually timed region.
-BENCHMARK(painter)->Arg(150)->Arg(300)->Arg(600)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(5);
-BENCHMARK(zbuffer)->Arg(150)->Arg(300)->Arg(600)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(5);
+BENCHMARK(painter)
+    ->Arg(150)
+    ->Arg(300)
+    ->Arg(600)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Repetitions(5);
+BENCHMARK(zbuffer)
+    ->Arg(150)
+    ->Arg(300)
+    ->Arg(600)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Repetitions(5);
 
 int main(int argc, char** argv)
 {

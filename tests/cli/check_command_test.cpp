@@ -33,8 +33,7 @@ std::vector<std::string> linesOf(const std::string& text)
     return lines;
 }
 
-bool hasLineStartingWith(const std::string& text, const std::string& prefix,
-                         const std::string& containing = {})
+bool hasLineStartingWith(const std::string& text, const std::string& prefix, const std::string& containing = {})
 {
     for (const std::string& line : linesOf(text))
         if (line.rfind(prefix, 0) == 0 && line.find(containing) != std::string::npos)
@@ -143,8 +142,7 @@ TEST(RegioSolveCheck, TheSummaryCountsTheSceneContents)
 {
     const CommandRun run = runRegioSolve({"check", "full.json"}, kDataDir / "valid");
     EXPECT_EQ(run.exitCode, 0) << run.out;
-    EXPECT_NE(run.out.find("full.json: ok (3 materials, 3 objects, 3 parts, 8 faces, 1 region)"),
-              std::string::npos)
+    EXPECT_NE(run.out.find("full.json: ok (3 materials, 3 objects, 3 parts, 8 faces, 1 region)"), std::string::npos)
         << run.out;
 }
 
@@ -156,8 +154,7 @@ TEST(RegioSolveCheck, WarningsAloneStillExitZero)
     dir.write("extra-key.json", text);
     const CommandRun run = runRegioSolve({"check", "extra-key.json"}, dir.path());
     EXPECT_EQ(run.exitCode, 0) << run.out;
-    EXPECT_TRUE(hasLineStartingWith(run.out, "extra-key.json: /lights: warning: unknown key"))
-        << run.out;
+    EXPECT_TRUE(hasLineStartingWith(run.out, "extra-key.json: /lights: warning: unknown key")) << run.out;
     EXPECT_TRUE(hasLineStartingWith(run.out, "extra-key.json: ok with 1 warning")) << run.out;
 }
 
@@ -172,7 +169,7 @@ TEST(RegioSolveCheck, ADashReadsStandardInput)
 
 // ---------------------------------------------------------- bad scenes
 
-class CheckBrokenFile : public testing::TestWithParam<regio::test::BrokenFile> {};
+class CheckBrokenFile : public testing::TestWithParam<regio::test::BrokenFile> { };
 
 TEST_P(CheckBrokenFile, ExitsOneAndSaysWhere)
 {
@@ -187,14 +184,13 @@ TEST_P(CheckBrokenFile, ExitsOneAndSaysWhere)
     if (!expected.pointer.empty())
         location += ": " + expected.pointer;
     EXPECT_TRUE(hasLineStartingWith(run.out, location + ": error: ", expected.message))
-        << "expected a line starting with \"" << location << ": error: \" and containing \""
-        << expected.message << "\"; got:\n"
+        << "expected a line starting with \"" << location << ": error: \" and containing \"" << expected.message
+        << "\"; got:\n"
         << run.out;
     EXPECT_TRUE(hasLineStartingWith(run.out, expected.name + ": ", " error")) << run.out;
 }
 
-INSTANTIATE_TEST_SUITE_P(TestData, CheckBrokenFile,
-                         testing::ValuesIn(regio::test::loadBrokenFileTable()),
+INSTANTIATE_TEST_SUITE_P(TestData, CheckBrokenFile, testing::ValuesIn(regio::test::loadBrokenFileTable()),
                          [](const testing::TestParamInfo<regio::test::BrokenFile>& test) {
                              std::string name = test.param.name;
                              for (char& c : name)
@@ -293,6 +289,5 @@ TEST(RegioSolveCheck, ControlCharactersFromTheFileAreEscapedInTheOutput)
     const CommandRun run = runRegioSolve({"check", "bell.json"}, dir.path());
     EXPECT_EQ(run.exitCode, 0) << run.out;
     EXPECT_EQ(run.out.find('\a'), std::string::npos);
-    EXPECT_NE(run.out.find("/bell\\x07: warning: unknown key \"bell\\x07\""), std::string::npos)
-        << run.out;
+    EXPECT_NE(run.out.find("/bell\\x07: warning: unknown key \"bell\\x07\""), std::string::npos) << run.out;
 }

@@ -53,10 +53,10 @@ TEST(SolveAdaptiveOptions, EachOptionOverridesTheScenesSettingInTheReport)
 {
     ScratchDir scratch;
     const fs::path scene = scratch.write("lamp.json", kLampOverFloor);
-    const json a = solveReport(scratch,
-                               {"--iterations", "2", "--adaptive", "on", "--threshold", "0.125", "--min-edge", "0.0625",
-                                "--anchoring", "off"},
-                               scene)["adaptive"];
+    const json a = solveReport(
+        scratch,
+        {"--iterations", "2", "--adaptive", "on", "--threshold", "0.125", "--min-edge", "0.0625", "--anchoring", "off"},
+        scene)["adaptive"];
     EXPECT_EQ(a["enabled"], true);
     EXPECT_EQ(a["threshold"], 0.125);
     EXPECT_EQ(a["minEdge"], 0.0625);
@@ -79,9 +79,9 @@ TEST(SolveAdaptiveOptions, OptionsAlsoTakeTheirValueAfterAnEqualsSign)
 {
     ScratchDir scratch;
     const fs::path scene = scratch.write("lamp.json", kLampOverFloor);
-    const json a = solveReport(scratch, {"--iterations=2", "--adaptive=on", "--threshold=0.25", "--min-edge=0.5",
-                                         "--anchoring=off"},
-                               scene)["adaptive"];
+    const json a = solveReport(
+        scratch, {"--iterations=2", "--adaptive=on", "--threshold=0.25", "--min-edge=0.5", "--anchoring=off"},
+        scene)["adaptive"];
     EXPECT_EQ(a["enabled"], true);
     EXPECT_EQ(a["threshold"], 0.25);
     EXPECT_EQ(a["minEdge"], 0.5);
@@ -115,8 +115,8 @@ TEST(SolveAdaptiveOptions, AThresholdOfOneSplitsNothing)
     // The contrast is relative to the brighter neighbour, so it never exceeds 1.
     ScratchDir scratch;
     const int initial = solveReport(scratch, {"--iterations", "0", "--hemicube", "60"}, kTwoLights)["elements"];
-    const json r = solveReport(scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--threshold", "1"},
-                               kTwoLights);
+    const json r = solveReport(
+        scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--threshold", "1"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
 }
@@ -125,8 +125,8 @@ TEST(SolveAdaptiveOptions, AMinimumEdgeLongerThanEveryElementSplitsNothing)
 {
     ScratchDir scratch;
     const int initial = solveReport(scratch, {"--iterations", "0", "--hemicube", "60"}, kTwoLights)["elements"];
-    const json r = solveReport(scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--min-edge", "50"},
-                               kTwoLights);
+    const json r = solveReport(
+        scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--min-edge", "50"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
 }
@@ -138,20 +138,19 @@ TEST(SolveAdaptiveOptions, BadValuesAreUsageErrorsNamingTheOption)
         std::vector<std::string> args;
         std::string option;
     };
-    for (const Case& c : std::vector<Case>{
-             {{"--adaptive", "yes", scene}, "--adaptive"},
-             {{"--adaptive", "", scene}, "--adaptive"},
-             {{"--adaptive"}, "--adaptive"},
-             {{"--anchoring", "true", scene}, "--anchoring"},
-             {{"--anchoring=1", scene}, "--anchoring"},
-             {{"--threshold", "-0.1", scene}, "--threshold"},
-             {{"--threshold", "abc", scene}, "--threshold"},
-             {{"--threshold", "nan", scene}, "--threshold"},
-             {{"--threshold", "0.1x", scene}, "--threshold"},
-             {{"--min-edge", "0", scene}, "--min-edge"},
-             {{"--min-edge", "-0.02", scene}, "--min-edge"},
-             {{"--min-edge", "inf", scene}, "--min-edge"},
-             {{"--min-edge", "2cm", scene}, "--min-edge"}}) {
+    for (const Case& c : std::vector<Case>{{{"--adaptive", "yes", scene}, "--adaptive"},
+                                           {{"--adaptive", "", scene}, "--adaptive"},
+                                           {{"--adaptive"}, "--adaptive"},
+                                           {{"--anchoring", "true", scene}, "--anchoring"},
+                                           {{"--anchoring=1", scene}, "--anchoring"},
+                                           {{"--threshold", "-0.1", scene}, "--threshold"},
+                                           {{"--threshold", "abc", scene}, "--threshold"},
+                                           {{"--threshold", "nan", scene}, "--threshold"},
+                                           {{"--threshold", "0.1x", scene}, "--threshold"},
+                                           {{"--min-edge", "0", scene}, "--min-edge"},
+                                           {{"--min-edge", "-0.02", scene}, "--min-edge"},
+                                           {{"--min-edge", "inf", scene}, "--min-edge"},
+                                           {{"--min-edge", "2cm", scene}, "--min-edge"}}) {
         std::vector<std::string> all{"solve"};
         all.insert(all.end(), c.args.begin(), c.args.end());
         const CommandRun run = runRegioSolve(all);
@@ -178,20 +177,20 @@ TEST(SolveAdaptiveOptions, TuningASubdivisionThatIsOffIsSolvedWithAWarning)
 {
     ScratchDir scratch;
     const fs::path scene = scratch.write("lamp.json", kLampOverFloor); // adaptive.enabled = false
-    const CommandRun run = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--threshold", "0.2", "--min-edge",
-                                          "0.1", scene.string()});
+    const CommandRun run = runRegioSolve(
+        {"solve", "--quiet", "--iterations", "1", "--threshold", "0.2", "--min-edge", "0.1", scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.err.find("warning: --threshold, --min-edge have no effect"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("--adaptive on turns it on"), std::string::npos) << run.err;
 
-    const CommandRun off = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--adaptive", "off", "--anchoring",
-                                          "off", kTwoLights.string()});
+    const CommandRun off = runRegioSolve(
+        {"solve", "--quiet", "--iterations", "1", "--adaptive", "off", "--anchoring", "off", kTwoLights.string()});
     ASSERT_EQ(off.exitCode, 0) << off.err;
     EXPECT_NE(off.err.find("warning: --anchoring has no effect"), std::string::npos) << off.err;
     EXPECT_EQ(off.err.find("turns it on"), std::string::npos) << off.err;
 
-    const CommandRun on = runRegioSolve({"solve", "--quiet", "--iterations", "1", "--adaptive", "on", "--threshold",
-                                         "0.2", scene.string()});
+    const CommandRun on = runRegioSolve(
+        {"solve", "--quiet", "--iterations", "1", "--adaptive", "on", "--threshold", "0.2", scene.string()});
     ASSERT_EQ(on.exitCode, 0) << on.err;
     EXPECT_EQ(on.err, "");
 }
@@ -204,7 +203,8 @@ TEST(SolveAdaptiveOptions, TheReportsEnergyBooksBalanceWithSubdivisionOn)
     const json& e = r["energy"];
     for (size_t c = 0; c < 3; ++c) {
         const double emitted = e["emitted"][c].get<double>();
-        const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
+        const double sum =
+            e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
         EXPECT_NEAR(sum, emitted, 1e-9 * emitted) << "channel " << c;
     }
 }

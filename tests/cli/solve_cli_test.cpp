@@ -77,8 +77,8 @@ TEST(SolveCommand, SolvesASampleSceneAndWritesAReportWithEveryRequiredField)
 {
     Scratch scratch;
     const fs::path scene = samplePath("two-lights-room");
-    const CommandRun run = solve({"--iterations", "5", "--hemicube", "60", "--report", (scratch / "r.json").string(),
-                                  scene.string()});
+    const CommandRun run =
+        solve({"--iterations", "5", "--hemicube", "60", "--report", (scratch / "r.json").string(), scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const json r = json::parse(readText(scratch / "r.json"));
     ASSERT_TRUE(r.is_object());
@@ -124,7 +124,8 @@ TEST(SolveCommand, EnergyInTheReportBalancesPerChannel)
     // The lamp: 1 m^2 at (10, 8, 6) W/m^2.
     EXPECT_NEAR(e["emitted"][0].get<double>(), 10.0, 1e-9);
     for (size_t c = 0; c < 3; ++c) {
-        const double sum = e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
+        const double sum =
+            e["absorbed"][c].get<double>() + e["unshot"][c].get<double>() + e["escaped"][c].get<double>();
         EXPECT_NEAR(sum, e["emitted"][c].get<double>(), 1e-6 * e["emitted"][c].get<double>());
     }
 }
@@ -169,8 +170,8 @@ TEST(SolveCommand, ConvergenceStopsTheSolveEarly)
 {
     Scratch scratch;
     const fs::path scene = samplePath("two-lights-room");
-    const CommandRun run = solve({"--hemicube", "40", "--convergence", "0.5", "--report",
-                                  (scratch / "r.json").string(), scene.string()});
+    const CommandRun run =
+        solve({"--hemicube", "40", "--convergence", "0.5", "--report", (scratch / "r.json").string(), scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const json r = json::parse(readText(scratch / "r.json"));
     EXPECT_EQ(r["stop"], "converged");
@@ -253,17 +254,17 @@ TEST(SolveCommand, AMixOfGoodAndBadScenesSolvesTheGoodOnesAndReportsTheWorstExit
 TEST(SolveCommand, BadOptionsAreUsageErrorsThatExitTwo)
 {
     const std::string scene = samplePath("cornell-box").string();
-    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-             {"--hemicube", "1", scene},
-             {"--hemicube", "abc", scene},
-             {"--hemicube", "100000", scene},
-             {"--iterations", "-3", scene},
-             {"--convergence", "nan", scene},
-             {"--visibility", "raytrace", scene},
-             {"--regions", "some", scene},
-             {"--report"},
-             {"--frobnicate", scene},
-             {}}) {
+    for (const std::vector<std::string>& args :
+         std::vector<std::vector<std::string>>{{"--hemicube", "1", scene},
+                                               {"--hemicube", "abc", scene},
+                                               {"--hemicube", "100000", scene},
+                                               {"--iterations", "-3", scene},
+                                               {"--convergence", "nan", scene},
+                                               {"--visibility", "raytrace", scene},
+                                               {"--regions", "some", scene},
+                                               {"--report"},
+                                               {"--frobnicate", scene},
+                                               {}}) {
         const CommandRun run = solve(args);
         EXPECT_EQ(run.exitCode, 2) << (args.empty() ? "no arguments" : args[0]);
         EXPECT_NE(run.err.find("regio-solve solve:"), std::string::npos) << run.err;
@@ -274,8 +275,8 @@ TEST(SolveCommand, HelpDescribesEveryOption)
 {
     const CommandRun run = solve({"--help"});
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions",
-                               "--adaptive", "--threshold", "--min-edge", "--anchoring", "--report", "--quiet"})
+    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions", "--adaptive",
+                               "--threshold", "--min-edge", "--anchoring", "--report", "--quiet"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
@@ -283,7 +284,8 @@ TEST(SolveCommand, InterruptStopsTheSolveAndStillWritesTheReport)
 {
     Scratch scratch;
     const fs::path scene = samplePath("two-lights-room");
-    const std::string command = quoted(REGIO_SOLVE_EXE) + " solve --quiet --iterations 1000000 --hemicube 600 --report " +
+    const std::string command = quoted(REGIO_SOLVE_EXE) +
+                                " solve --quiet --iterations 1000000 --hemicube 600 --report " +
                                 quoted((scratch / "r.json").string()) + " " + quoted(scene.string()) +
                                 " </dev/null >/dev/null 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo $? > " +
                                 quoted((scratch / "code").string());
@@ -301,8 +303,8 @@ TEST(SolveOutputs, WritesTheLitModelAndThePictureOfTheSolvedScene)
     const fs::path scene = scratch.write("small.json", kSmallScene);
     const fs::path model = scratch / "lit.ply";
     const fs::path image = scratch / "lit.png";
-    const CommandRun run = solve({"--quiet", "--iterations", "5", "--out", model.string(), "--image",
-                                  image.string(), "--size", "64x48", scene.string()});
+    const CommandRun run = solve({"--quiet", "--iterations", "5", "--out", model.string(), "--image", image.string(),
+                                  "--size", "64x48", scene.string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string ply = readText(model);
     EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);

@@ -22,8 +22,8 @@ TEST(Result, AValueComesWithItsWarnings)
 
 TEST(Result, AFailureHoldsItsErrorAndEverythingFoundBeforeIt)
 {
-    const Result<std::string> r(Diagnostics{makeWarning("first a warning"), makeError("then the error", "/version"),
-                                            makeError("and another")});
+    const Result<std::string> r(
+        Diagnostics{makeWarning("first a warning"), makeError("then the error", "/version"), makeError("and another")});
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().message, "then the error") << "error() is the first error, not the first diagnostic";
     EXPECT_EQ(r.error().pointer, "/version");

@@ -29,10 +29,7 @@ uint32_t u32(const std::string& bytes, size_t at)
     return v;
 }
 
-float f32(const std::string& bytes, size_t at)
-{
-    return std::bit_cast<float>(u32(bytes, at));
-}
+float f32(const std::string& bytes, size_t at) { return std::bit_cast<float>(u32(bytes, at)); }
 
 DisplayColours colours(const LitMesh& mesh, double exposure = 0.0)
 {
@@ -68,8 +65,8 @@ std::vector<uint32_t> readIndices(const json& doc, const std::string& bin)
     std::vector<uint32_t> out;
     for (size_t i = 0; i < accessor["count"].get<size_t>(); ++i) {
         if (type == 5123)
-            out.push_back(static_cast<unsigned char>(bin[offset + 2 * i])
-                          | (static_cast<unsigned char>(bin[offset + 2 * i + 1]) << 8));
+            out.push_back(static_cast<unsigned char>(bin[offset + 2 * i]) |
+                          (static_cast<unsigned char>(bin[offset + 2 * i + 1]) << 8));
         else
             out.push_back(u32(bin, offset + 4 * i));
     }

@@ -156,7 +156,7 @@ TEST(Export, ExposureBrightensThePicture)
     ASSERT_TRUE(writeOutputs(sampleRoom(), request));
     const Decoded dark = decodePng((folder / "dark.png").string());
     const Decoded bright = decodePng((folder / "bright.png").string());
-    const auto d = dark.pixel(80, 60);   // the back wall, 1 W/m^2
+    const auto d = dark.pixel(80, 60); // the back wall, 1 W/m^2
     const auto b = bright.pixel(80, 60);
     EXPECT_GT(b[0], d[0]);
     // Gamma 2.2: four times the light is 4^(1/2.2) = 1.88 times the value.

@@ -30,7 +30,8 @@ LitMesh bigPlane()
     LitMesh mesh;
     for (int i = 0; i < 22000; ++i) { // 66 000 vertices: 32-bit indices
         const float x = static_cast<float>(i % 200) * 0.1f, z = static_cast<float>(i / 200) * 0.1f;
-        test::addTriangle(mesh, {x, 0, z}, {x, 0, z + 0.1f}, {x + 0.1f, 0, z}, glm::vec3(0.01f * float(i % 100)), "plane");
+        test::addTriangle(mesh, {x, 0, z}, {x, 0, z + 0.1f}, {x + 0.1f, 0, z}, glm::vec3(0.01f * float(i % 100)),
+                          "plane");
     }
     return mesh;
 }
@@ -66,13 +67,13 @@ bool writeGltfSamples(const std::filesystem::path& folder)
     srgbBright.toneMap.encoding.transfer = Transfer::Srgb;
     srgbBright.toneMap.clamp = false;
 
-    bool ok = write(folder / "room.gltf", room) && write(folder / "room.glb", room)
-              && write(folder / "room false colour.gltf", room, falseColour)
-              && write(folder / "room-bright.glb", room, srgbBright) && write(folder / "empty.gltf", LitMesh{})
-              && write(folder / "empty.glb", LitMesh{}) && write(folder / "big.glb", bigPlane());
+    bool ok = write(folder / "room.gltf", room) && write(folder / "room.glb", room) &&
+              write(folder / "room false colour.gltf", room, falseColour) &&
+              write(folder / "room-bright.glb", room, srgbBright) && write(folder / "empty.gltf", LitMesh{}) &&
+              write(folder / "empty.glb", LitMesh{}) && write(folder / "big.glb", bigPlane());
     const auto cornell = solvedCornellBox();
-    ok = ok && cornell && write(folder / "cornell.gltf", *cornell) && write(folder / "cornell.glb", *cornell)
-         && write(folder / "cornell-false-colour.glb", *cornell, falseColour);
+    ok = ok && cornell && write(folder / "cornell.gltf", *cornell) && write(folder / "cornell.glb", *cornell) &&
+         write(folder / "cornell-false-colour.glb", *cornell, falseColour);
     if (ok)
         std::cout << "glTF samples written to " << folder.string() << "\n";
     return ok;

@@ -65,10 +65,10 @@ TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)
                 const nlohmann::json& region = bsp["perRegion"][r];
                 const BspFigures& f = figures.regions[r].figures;
                 EXPECT_EQ(region["id"].get<std::string>(), figures.regions[r].id);
-                EXPECT_EQ((BspFigures{region["inputFaces"].get<int>(), region["fragments"].get<int>(),
-                                      region["splits"].get<int>(), region["depth"].get<int>(),
-                                      region["nodes"].get<int>()}),
-                          f);
+                EXPECT_EQ(
+                    (BspFigures{region["inputFaces"].get<int>(), region["fragments"].get<int>(),
+                                region["splits"].get<int>(), region["depth"].get<int>(), region["nodes"].get<int>()}),
+                    f);
             }
         }
 }

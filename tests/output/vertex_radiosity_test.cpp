@@ -91,9 +91,9 @@ int hangingVertices(const LitMesh& m)
         const glm::dvec3 a = m.positions[edge.first], b = m.positions[edge.second];
         const glm::dvec3 d = b - a;
         for (size_t v = 0; v < m.vertexCount(); ++v) {
-            if (v == edge.first || v == edge.second
-                || glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.normals[edge.first])) < 0.999
-                || m.reflectance[v] != m.reflectance[edge.first])
+            if (v == edge.first || v == edge.second ||
+                glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.normals[edge.first])) < 0.999 ||
+                m.reflectance[v] != m.reflectance[edge.first])
                 continue;
             const glm::dvec3 p = m.positions[v];
             const double t = glm::dot(p - a, d) / glm::dot(d, d);
@@ -156,7 +156,8 @@ TEST(VertexRadiosity, LinearRampIsReproducedAtInteriorVertices)
     addMaterial(scene, "grey", {0.5, 0.5, 0.5});
     addFloor(scene, "floor", 0, 1, 0, 1, "grey");
     const PreparedScene prepared = prepare(scene, 0.1);
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
+    const LitMesh mesh =
+        smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
     int interior = 0;
     double worst = 0.0;
     for (size_t v = 0; v < mesh.vertexCount(); ++v) {
@@ -227,9 +228,10 @@ TEST(VertexRadiosity, CreaseOfABoxCornerIsNotAveragedAcross)
     addBox(scene, "room", {0, 0, 0}, {1, 1, 1}, "grey", true);
     const PreparedScene prepared = prepare(scene, 0.25);
     // Every wall uniform, each its own value.
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
-        return Rgb(1.0 + static_cast<double>(prepared.properties[static_cast<size_t>(e.properties)].face));
-    }));
+    const LitMesh mesh = smoothLitMesh(
+        prepared, elementValues(prepared, [&](const Element& e) {
+            return Rgb(1.0 + static_cast<double>(prepared.properties[static_cast<size_t>(e.properties)].face));
+        }));
     ASSERT_EQ(mesh.triangleCount(), prepared.elements.size());
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         const float expected = 1.0f + static_cast<float>(mesh.triangleFace[t]);
@@ -253,9 +255,8 @@ TEST(VertexRadiosity, MaterialBoundaryKeepsBothValues)
     addFloor(scene, "right", 1, 2, 0, 1, "red");
     const PreparedScene prepared = prepare(scene, 0.25);
     const int left = faceIndex(prepared, "left.face");
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
-        return Rgb(e.properties == left ? 1.0 : 4.0);
-    }));
+    const LitMesh mesh = smoothLitMesh(
+        prepared, elementValues(prepared, [&](const Element& e) { return Rgb(e.properties == left ? 1.0 : 4.0); }));
     int onSeamLow = 0, onSeamHigh = 0;
     for (size_t v = 0; v < mesh.vertexCount(); ++v) {
         if (std::abs(mesh.positions[v].x - 1.0f) > 1e-6f)
@@ -276,9 +277,8 @@ TEST(VertexRadiosity, LampSetIntoACeilingOfEqualReflectanceKeepsItsBorder)
     addFloor(scene, "lamp", 1, 2, 0, 1, "lamp");
     const PreparedScene prepared = prepare(scene, 0.25);
     const int ceiling = faceIndex(prepared, "ceiling.face");
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
-        return Rgb(e.properties == ceiling ? 1.0 : 20.0);
-    }));
+    const LitMesh mesh = smoothLitMesh(
+        prepared, elementValues(prepared, [&](const Element& e) { return Rgb(e.properties == ceiling ? 1.0 : 20.0); }));
     for (const glm::vec3& r : mesh.radiosity)
         EXPECT_TRUE(r.x == 1.0f || r.x == 20.0f) << r.x;
 }
@@ -291,9 +291,8 @@ TEST(VertexRadiosity, TouchingFacesOfOnePlaneAndMaterialShareTheirSeam)
     addFloor(scene, "right", 1, 2, 0, 1, "grey");
     const PreparedScene prepared = prepare(scene, 0.25);
     const int left = faceIndex(prepared, "left.face");
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [&](const Element& e) {
-        return Rgb(e.properties == left ? 1.0 : 4.0);
-    }));
+    const LitMesh mesh = smoothLitMesh(
+        prepared, elementValues(prepared, [&](const Element& e) { return Rgb(e.properties == left ? 1.0 : 4.0); }));
     int onSeam = 0;
     for (size_t v = 0; v < mesh.vertexCount(); ++v) {
         if (std::abs(mesh.positions[v].x - 1.0f) > 1e-6f)
@@ -309,7 +308,8 @@ TEST(VertexRadiosity, PiecesMeetingWithTVerticesAreJoinedWithoutThem)
 {
     const PreparedScene prepared = tJunctionFloor();
     const LitMesh flat = litMeshFromSolution(prepared, std::vector<Rgb>(prepared.elements.size(), Rgb(1.0)));
-    const LitMesh mesh = smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
+    const LitMesh mesh =
+        smoothLitMesh(prepared, elementValues(prepared, [](const Element& e) { return ramp(e.centroid); }));
     EXPECT_FALSE(!checkLitMesh(mesh).ok());
     EXPECT_GT(mesh.triangleCount(), prepared.elements.size()) << "elements beside the seam were split at T-vertices";
     double boundaryLength = 0.0;
@@ -354,7 +354,8 @@ TEST(VertexRadiosity, NeighbourSmoothingSoftensAShadowBorder)
     addMaterial(scene, "grey", {0.5, 0.5, 0.5});
     addFloor(scene, "floor", 0, 2, 0, 2, "grey");
     const PreparedScene prepared = prepare(scene, 0.25);
-    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 1.0 ? 0.0 : 10.0); });
+    const std::vector<Rgb> values =
+        elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 1.0 ? 0.0 : 10.0); });
     SmoothingOptions smoothing;
     smoothing.neighbourPasses = 4;
     const LitMesh sharp = smoothLitMesh(prepared, values);

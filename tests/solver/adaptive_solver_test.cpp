@@ -23,10 +23,7 @@ Vec3 elementCentroid(const SolutionMesh& mesh, size_t e)
     return (mesh.vertices[size_t(t[0])] + mesh.vertices[size_t(t[1])] + mesh.vertices[size_t(t[2])]) / 3.0;
 }
 
-double luminance(const Rgb& c)
-{
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
+double luminance(const Rgb& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 int faceIndex(const SolutionMesh& mesh, const std::string& id)
 {
@@ -84,8 +81,8 @@ TEST(AdaptiveSolver, ElementsMultiplyWhereTheShadowFallsAndTheMeshRevisionChange
     const double shadowGrowth = double(count(*after.mesh, true)) / count(*before.mesh, true);
     const double besideGrowth = double(count(*after.mesh, false)) / count(*before.mesh, false);
     EXPECT_GT(shadowGrowth, 2.0 * besideGrowth)
-        << "by the shadow " << count(*before.mesh, true) << " -> " << count(*after.mesh, true) << " elements, beside it "
-        << count(*before.mesh, false) << " -> " << count(*after.mesh, false);
+        << "by the shadow " << count(*before.mesh, true) << " -> " << count(*after.mesh, true)
+        << " elements, beside it " << count(*before.mesh, false) << " -> " << count(*after.mesh, false);
 }
 
 TEST(AdaptiveSolver, SnapshotsFromAnotherThreadStayConsistentWhileRunSubdivides)
@@ -102,8 +99,8 @@ TEST(AdaptiveSolver, SnapshotsFromAnotherThreadStayConsistentWhileRunSubdivides)
     std::thread reader([&] {
         while (!done.load()) {
             const SolutionSnapshot s = solver.snapshot();
-            if (s.mesh->triangles.size() != s.radiosity.size() || s.mesh->elementFace.size() != s.radiosity.size()
-                || s.mesh->reflectance.size() != s.radiosity.size())
+            if (s.mesh->triangles.size() != s.radiosity.size() || s.mesh->elementFace.size() != s.radiosity.size() ||
+                s.mesh->reflectance.size() != s.radiosity.size())
                 ++inconsistent;
             const std::vector<FaceResult> faces = solver.faceResults();
             if (faces.size() != s.mesh->faceIds.size())

@@ -90,7 +90,7 @@ TEST(FormFactor, OneHemicubeAtTheCentreOfALargePatchShowsTheProximityError)
     auto built = Solver::create(scene, options);
     ASSERT_TRUE(built.ok());
     ASSERT_EQ((*built)->prepared().patches.size(), 4u); // two squares, two triangles each
-    (*built)->step(2); // both emitter triangles, each from its own centroid
+    (*built)->step(2);                                  // both emitter triangles, each from its own centroid
     double received = 0.0;
     for (const FaceResult& f : (*built)->faceResults())
         if (f.id == "receiver.face")

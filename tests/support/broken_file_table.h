@@ -11,24 +11,18 @@
 namespace regio::test {
 
 struct BrokenFile {
-    std::string name;     // file name in tests/data/broken
-    std::string stage;    // "format" (parseScene) or "validation" (validateScene)
-    int line = 0;         // syntax errors: 1-based position, else 0
+    std::string name;  // file name in tests/data/broken
+    std::string stage; // "format" (parseScene) or "validation" (validateScene)
+    int line = 0;      // syntax errors: 1-based position, else 0
     int column = 0;
-    std::string pointer;  // JSON pointer; empty for the whole document
-    std::string message;  // a part of the expected message
+    std::string pointer; // JSON pointer; empty for the whole document
+    std::string message; // a part of the expected message
 };
 
 // Test names print the file, not the bytes of the struct.
-inline void PrintTo(const BrokenFile& file, std::ostream* out)
-{
-    *out << file.name;
-}
+inline void PrintTo(const BrokenFile& file, std::ostream* out) { *out << file.name; }
 
-inline std::string brokenDataDir()
-{
-    return std::string(REGIO_TEST_DATA) + "/broken";
-}
+inline std::string brokenDataDir() { return std::string(REGIO_TEST_DATA) + "/broken"; }
 
 // Location column: "-", "/json/pointer", "LINE:COLUMN" or "LINE:COLUMN /pointer".
 inline std::vector<BrokenFile> loadBrokenFileTable()

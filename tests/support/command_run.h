@@ -69,7 +69,7 @@ private:
 
 // Runs regio-solve with `args` from `workDir`, standard input from `stdinFile`.
 inline CommandRun runRegioSolve(const std::vector<std::string>& args, const fs::path& workDir = {},
-                  const fs::path& stdinFile = "/dev/null")
+                                const fs::path& stdinFile = "/dev/null")
 {
     ScratchDir scratch;
     std::string command;
@@ -78,8 +78,7 @@ inline CommandRun runRegioSolve(const std::vector<std::string>& args, const fs::
     command += shellQuoted(REGIO_SOLVE_EXE);
     for (const std::string& arg : args)
         command += " " + shellQuoted(arg);
-    command += " <" + shellQuoted(stdinFile.string()) + " >" +
-               shellQuoted((scratch.path() / "out").string()) + " 2>" +
+    command += " <" + shellQuoted(stdinFile.string()) + " >" + shellQuoted((scratch.path() / "out").string()) + " 2>" +
                shellQuoted((scratch.path() / "err").string());
     const int status = std::system(command.c_str());
     CommandRun run;

@@ -19,10 +19,7 @@ namespace regio::test {
 
 // The file of a sample scene (support/sample_scenes.h), as the editor's open
 // functions take it: sampleFile("cornell-box").
-inline QString sampleFile(const std::string& name)
-{
-    return QString::fromStdString(samplePath(name).string());
-}
+inline QString sampleFile(const std::string& name) { return QString::fromStdString(samplePath(name).string()); }
 
 // Materials white, red and light; a table (desk + legs), a crate, a lamp
 // panel; a region around them with a BSP order. The scene is valid.
@@ -52,25 +49,19 @@ inline model::Scene smallScene()
 }
 
 // A document holding `scene`, unmodified, with an empty undo stack.
-inline void resetDocument(editor::SceneDocument& document, model::Scene scene)
-{
-    document.reset(std::move(scene));
-}
+inline void resetDocument(editor::SceneDocument& document, model::Scene scene) { document.reset(std::move(scene)); }
 
-inline void initTestEnvironment()
-{
-    QStandardPaths::setTestModeEnabled(true);
-}
+inline void initTestEnvironment() { QStandardPaths::setTestModeEnabled(true); }
 
 } // namespace regio::test
 
 // After a command was pushed: undo must give back `before` exactly, redo the
 // state after the command, and the stack must be back where it was.
-#define VERIFY_UNDO_REDO(document, before)                                                      \
-    do {                                                                                        \
-        const regio::model::Scene regioAfter_ = (document).scene();                             \
-        (document).undoStack()->undo();                                                         \
-        QVERIFY2((document).scene() == (before), "undo did not restore the scene");             \
-        (document).undoStack()->redo();                                                         \
-        QVERIFY2((document).scene() == regioAfter_, "redo did not repeat the edit");            \
+#define VERIFY_UNDO_REDO(document, before)                                                                             \
+    do {                                                                                                               \
+        const regio::model::Scene regioAfter_ = (document).scene();                                                    \
+        (document).undoStack()->undo();                                                                                \
+        QVERIFY2((document).scene() == (before), "undo did not restore the scene");                                    \
+        (document).undoStack()->redo();                                                                                \
+        QVERIFY2((document).scene() == regioAfter_, "redo did not repeat the edit");                                   \
     } while (false)

@@ -43,9 +43,10 @@ inline model::Scene furnishedRoom(unsigned seed, int count = 100, model::Vec3 si
     for (int i = 0; i < 2; ++i) {
         const double x = size.x * (i == 0 ? 0.3 : 0.7), z = size.z * 0.5;
         const std::string id = "lamp" + std::to_string(i + 1);
-        scene.objects.push_back(
-            {id, "", {*model::makeBox(id + ".panel", {x - 0.5, size.y - 0.06, z - 0.5}, {x + 0.5, size.y - 0.02, z + 0.5},
-                                      "lamp")}});
+        scene.objects.push_back({id,
+                                 "",
+                                 {*model::makeBox(id + ".panel", {x - 0.5, size.y - 0.06, z - 0.5},
+                                                  {x + 0.5, size.y - 0.02, z + 0.5}, "lamp")}});
     }
 
     struct Footprint {
@@ -78,7 +79,8 @@ inline model::Scene furnishedRoom(unsigned seed, int count = 100, model::Vec3 si
                 if (!fits(f))
                     continue;
                 placed.push_back(f);
-                scene.objects.push_back({id, "", {*model::makeBox(id + ".body", {x, 0, z}, {x + w, h, z + d}, "grey")}});
+                scene.objects.push_back(
+                    {id, "", {*model::makeBox(id + ".body", {x, 0, z}, {x + w, h, z + d}, "grey")}});
                 ++made.boxes;
             } else if (kind < 0.7) {
                 const int sides = 3 + int(unit() * 6.0); // 3..8

@@ -3,8 +3,8 @@
 // every part the model builds must have (closed, manifold, outward, planar
 // convex faces, unique ids), stated once.
 #include "model/geometry/geometry.h"
-#include "model/scene.h"
 #include "model/geometry/winged_edge.h"
+#include "model/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -46,8 +46,7 @@ inline ::testing::AssertionResult isClosedManifold(const Part& part)
 {
     model::WingedEdgeMesh mesh = model::WingedEdgeMesh::build(part);
     if (!mesh.problems().empty())
-        return ::testing::AssertionFailure()
-               << part.id << ": " << mesh.problems().size() << " topology problems";
+        return ::testing::AssertionFailure() << part.id << ": " << mesh.problems().size() << " topology problems";
     if (!mesh.isClosed())
         return ::testing::AssertionFailure()
                << part.id << " is open: " << mesh.boundaryEdges().size() << " boundary edges";
@@ -82,8 +81,7 @@ inline ::testing::AssertionResult idsAreUnique(const std::vector<const Part*>& p
             return ::testing::AssertionFailure() << "part id \"" << part->id << "\" repeats or is empty";
         for (const Face& face : part->faces)
             if (face.id.empty() || !ids.insert(face.id).second)
-                return ::testing::AssertionFailure()
-                       << "face id \"" << face.id << "\" repeats or is empty";
+                return ::testing::AssertionFailure() << "face id \"" << face.id << "\" repeats or is empty";
     }
     return ::testing::AssertionSuccess();
 }

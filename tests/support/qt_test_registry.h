@@ -44,32 +44,29 @@ inline bool registerQtTestClass(const char* name, QtTestMain main)
 // The body of QTEST_MAIN_WRAPPER (qtest.h) as a function of its own:
 // TestObject::initMain() if it has one, the application `setup` makes, then
 // the test class run with the remaining arguments.
-#define REGIO_QTEST_REGISTER(TestObject, setup)                                                    \
-    namespace {                                                                                    \
-    int regioQtTestMain##TestObject(int argc, char** argv)                                         \
-    {                                                                                              \
-        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                         \
-        setup                                                                                      \
-        TestObject tc;                                                                             \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                 \
-        return QTest::qExec(&tc, argc, argv);                                                      \
-    }                                                                                              \
-    const bool regioQtTestRegistered##TestObject =                                                 \
-        ::regio::test::registerQtTestClass(#TestObject, regioQtTestMain##TestObject);              \
+#define REGIO_QTEST_REGISTER(TestObject, setup)                                                                        \
+    namespace {                                                                                                        \
+    int regioQtTestMain##TestObject(int argc, char** argv)                                                             \
+    {                                                                                                                  \
+        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                                             \
+        setup TestObject tc;                                                                                           \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                                     \
+        return QTest::qExec(&tc, argc, argv);                                                                          \
+    }                                                                                                                  \
+    const bool regioQtTestRegistered##TestObject =                                                                     \
+        ::regio::test::registerQtTestClass(#TestObject, regioQtTestMain##TestObject);                                  \
     }
 
 // Instead of QTEST_MAIN(TestObject): a QApplication set up as QTEST_MAIN sets it up.
 #define REGIO_QTEST_MAIN(TestObject) REGIO_QTEST_REGISTER(TestObject, QTEST_MAIN_SETUP())
 
 // Instead of QTEST_GUILESS_MAIN(TestObject): a QCoreApplication, no GUI.
-#define REGIO_QTEST_GUILESS_MAIN(TestObject) \
-    REGIO_QTEST_REGISTER(TestObject, QTEST_QAPP_SETUP(QCoreApplication))
+#define REGIO_QTEST_GUILESS_MAIN(TestObject) REGIO_QTEST_REGISTER(TestObject, QTEST_QAPP_SETUP(QCoreApplication))
 
 // For a class that needs its own main (e.g. a default surface format set
 // before the application exists): `mainFunction` is that main under another
 // name, int(int argc, char** argv).
-#define REGIO_QTEST_OWN_MAIN(TestObject, mainFunction)                                             \
-    namespace {                                                                                    \
-    const bool regioQtTestRegistered##TestObject =                                                 \
-        ::regio::test::registerQtTestClass(#TestObject, mainFunction);                             \
+#define REGIO_QTEST_OWN_MAIN(TestObject, mainFunction)                                                                 \
+    namespace {                                                                                                        \
+    const bool regioQtTestRegistered##TestObject = ::regio::test::registerQtTestClass(#TestObject, mainFunction);      \
     }

@@ -26,8 +26,10 @@ inline model::Scene roomWithRegions(unsigned seed, int cellsX, int cellsZ, int b
 
     model::Object room{"room", "", {*model::makeRoom("room.shell", {0, 0, 0}, size, "white")}};
     scene.objects.push_back(room);
-    model::Object lamp{"lamp", "", {*model::makeBox("lamp.panel", {size.x * 0.4, size.y - 0.05, size.z * 0.4},
-                                                    {size.x * 0.6, size.y - 0.01, size.z * 0.6}, "lamp")}};
+    model::Object lamp{"lamp",
+                       "",
+                       {*model::makeBox("lamp.panel", {size.x * 0.4, size.y - 0.05, size.z * 0.4},
+                                        {size.x * 0.6, size.y - 0.01, size.z * 0.6}, "lamp")}};
     scene.objects.push_back(lamp);
 
     const double cellX = size.x / cellsX, cellZ = size.z / cellsZ;
@@ -45,7 +47,8 @@ inline model::Scene roomWithRegions(unsigned seed, int cellsX, int cellsZ, int b
                 const double z = region.min.z + 0.05 + unit(random) * (cellZ - d - 0.1);
                 const double y = unit(random) < 0.3 ? 0.6 + unit(random) : 0.0; // some float (tables, shelves)
                 const std::string id = "box" + std::to_string(++count);
-                model::Object object{id, "", {*model::makeBox(id + ".body", {x, y, z}, {x + w, y + h, z + d}, "white")}};
+                model::Object object{
+                    id, "", {*model::makeBox(id + ".body", {x, y, z}, {x + w, y + h, z + d}, "white")}};
                 scene.objects.push_back(object);
                 region.bspOrder.push_back(id + ".body.py");
             }

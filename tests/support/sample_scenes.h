@@ -20,10 +20,7 @@ inline std::filesystem::path samplesFolder()
 }
 
 // The file of the sample scene `name`.
-inline std::filesystem::path samplePath(const std::string& name)
-{
-    return samplesFolder() / (name + ".json");
-}
+inline std::filesystem::path samplePath(const std::string& name) { return samplesFolder() / (name + ".json"); }
 
 // Every sample scene file, sorted by name.
 inline std::vector<std::filesystem::path> sampleFiles()
@@ -44,9 +41,9 @@ inline model::Scene loadSample(const std::string& name)
     const std::filesystem::path path = samplePath(name);
     model::Result<model::Scene> read = model::loadSceneFile(path.string());
     if (!read.ok())
-        throw std::runtime_error("cannot load the sample scene " + path.string() + ": " +
-                                 (read.diagnostics().empty() ? std::string("no diagnostic")
-                                                           : read.diagnostics().front().message));
+        throw std::runtime_error(
+            "cannot load the sample scene " + path.string() + ": " +
+            (read.diagnostics().empty() ? std::string("no diagnostic") : read.diagnostics().front().message));
     return std::move(*read);
 }
 

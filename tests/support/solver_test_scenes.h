@@ -86,8 +86,7 @@ inline void addBox(Scene& scene, const std::string& id, Vec3 lo, Vec3 hi, const 
     scene.objects.push_back(object);
 }
 
-inline void addRegion(Scene& scene, const std::string& id, Vec3 lo, Vec3 hi,
-                      std::vector<std::string> bspOrder = {})
+inline void addRegion(Scene& scene, const std::string& id, Vec3 lo, Vec3 hi, std::vector<std::string> bspOrder = {})
 {
     model::Region r;
     r.id = id;

@@ -7,9 +7,10 @@
 namespace regio::editor {
 
 SetBspOrder::SetBspOrder(SceneDocument* document, std::string regionId, std::vector<std::string> order)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Set BSP order of %1")
-                                .arg(toQString(regionId)),
-                  Change::Regions, regionId, order)
+    : ChangeValue(
+          document,
+          QCoreApplication::translate("regio::editor::Commands", "Set BSP order of %1").arg(toQString(regionId)),
+          Change::Regions, regionId, order)
 {
 }
 
@@ -21,8 +22,10 @@ model::Result<std::vector<std::string>> SetBspOrder::set(model::Scene& scene, co
 
 InsertBspEntry::InsertBspEntry(SceneDocument* document, std::string regionId, std::string faceId, int index)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add %1 to the BSP order of %2")
-                                 .arg(toQString(faceId), toQString(regionId))),
-      m_regionId(std::move(regionId)), m_faceId(std::move(faceId)), m_index(index)
+                                 .arg(toQString(faceId), toQString(regionId)))
+    , m_regionId(std::move(regionId))
+    , m_faceId(std::move(faceId))
+    , m_index(index)
 {
 }
 
@@ -43,11 +46,12 @@ void InsertBspEntry::undo()
 }
 
 RemoveBspEntry::RemoveBspEntry(SceneDocument* document, std::string regionId, int index)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands",
-                                                         "Remove entry %1 from the BSP order of %2")
-                                 .arg(index + 1)
-                                 .arg(toQString(regionId))),
-      m_regionId(std::move(regionId)), m_index(index)
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Remove entry %1 from the BSP order of %2")
+                       .arg(index + 1)
+                       .arg(toQString(regionId)))
+    , m_regionId(std::move(regionId))
+    , m_index(index)
 {
 }
 
@@ -68,12 +72,13 @@ void RemoveBspEntry::undo()
 }
 
 MoveBspEntry::MoveBspEntry(SceneDocument* document, std::string regionId, int from, int to)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands",
-                                                         "Move BSP entry %1 of %2 to %3")
+    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Move BSP entry %1 of %2 to %3")
                                  .arg(from + 1)
                                  .arg(toQString(regionId))
-                                 .arg(to + 1)),
-      m_regionId(std::move(regionId)), m_from(from), m_to(to)
+                                 .arg(to + 1))
+    , m_regionId(std::move(regionId))
+    , m_from(from)
+    , m_to(to)
 {
 }
 

@@ -39,8 +39,11 @@ public:
 protected:
     ChangeValue(SceneDocument* document, const QString& text, Change changes, std::string target, Value value,
                 int mergeId = -1)
-        : SceneCommand(document, text), m_changes(changes), m_target(std::move(target)),
-          m_newValue(std::move(value)), m_mergeId(mergeId)
+        : SceneCommand(document, text)
+        , m_changes(changes)
+        , m_target(std::move(target))
+        , m_newValue(std::move(value))
+        , m_mergeId(mergeId)
     {
     }
 

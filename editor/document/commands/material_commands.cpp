@@ -8,9 +8,11 @@
 namespace regio::editor {
 
 AddMaterial::AddMaterial(SceneDocument* document, model::Material material, int index)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add material %1")
-                                 .arg(toQString(material.id))),
-      m_material(std::move(material)), m_index(index)
+    : SceneCommand(
+          document,
+          QCoreApplication::translate("regio::editor::Commands", "Add material %1").arg(toQString(material.id)))
+    , m_material(std::move(material))
+    , m_index(index)
 {
 }
 
@@ -31,9 +33,10 @@ void AddMaterial::undo()
 }
 
 RemoveMaterial::RemoveMaterial(SceneDocument* document, std::string materialId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Delete material %1")
-                                 .arg(toQString(materialId))),
-      m_materialId(std::move(materialId))
+    : SceneCommand(
+          document,
+          QCoreApplication::translate("regio::editor::Commands", "Delete material %1").arg(toQString(materialId)))
+    , m_materialId(std::move(materialId))
 {
 }
 
@@ -55,8 +58,9 @@ void RemoveMaterial::undo()
 
 RenameMaterial::RenameMaterial(SceneDocument* document, std::string materialId, std::string newId)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Rename %1 to %2")
-                                 .arg(toQString(materialId), toQString(newId))),
-      m_from(std::move(materialId)), m_to(std::move(newId))
+                                 .arg(toQString(materialId), toQString(newId)))
+    , m_from(std::move(materialId))
+    , m_to(std::move(newId))
 {
 }
 
@@ -75,8 +79,9 @@ void RenameMaterial::undo()
 }
 
 SetMaterialName::SetMaterialName(SceneDocument* document, std::string materialId, std::string name)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
-                                .arg(toQString(materialId), toQString(name)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
+                      .arg(toQString(materialId), toQString(name)),
                   Change::Materials, materialId, name, SetMaterialNameId)
 {
 }
@@ -89,9 +94,10 @@ model::Result<std::string> SetMaterialName::set(model::Scene& scene, const std::
 
 SetMaterialReflectance::SetMaterialReflectance(SceneDocument* document, std::string materialId,
                                                const model::Rgb& reflectance)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Reflectance of %1")
-                                .arg(toQString(materialId)),
-                  Change::Materials, materialId, reflectance, SetMaterialReflectanceId)
+    : ChangeValue(
+          document,
+          QCoreApplication::translate("regio::editor::Commands", "Reflectance of %1").arg(toQString(materialId)),
+          Change::Materials, materialId, reflectance, SetMaterialReflectanceId)
 {
 }
 
@@ -101,10 +107,9 @@ model::Result<model::Rgb> SetMaterialReflectance::set(model::Scene& scene, const
     return model::setMaterialReflectance(scene, target, value);
 }
 
-SetMaterialEmission::SetMaterialEmission(SceneDocument* document, std::string materialId,
-                                         const model::Rgb& emission)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Emission of %1")
-                                .arg(toQString(materialId)),
+SetMaterialEmission::SetMaterialEmission(SceneDocument* document, std::string materialId, const model::Rgb& emission)
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Emission of %1").arg(toQString(materialId)),
                   Change::Materials, materialId, emission, SetMaterialEmissionId)
 {
 }

@@ -47,8 +47,7 @@ public:
     SetMaterialName(SceneDocument* document, std::string materialId, std::string name);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 class SetMaterialReflectance : public ChangeValue<model::Rgb> {
@@ -56,8 +55,7 @@ public:
     SetMaterialReflectance(SceneDocument* document, std::string materialId, const model::Rgb& reflectance);
 
 protected:
-    model::Result<model::Rgb> set(model::Scene& scene, const std::string& target,
-                                  const model::Rgb& value) override;
+    model::Result<model::Rgb> set(model::Scene& scene, const std::string& target, const model::Rgb& value) override;
 };
 
 class SetMaterialEmission : public ChangeValue<model::Rgb> {
@@ -65,8 +63,7 @@ public:
     SetMaterialEmission(SceneDocument* document, std::string materialId, const model::Rgb& emission);
 
 protected:
-    model::Result<model::Rgb> set(model::Scene& scene, const std::string& target,
-                                  const model::Rgb& value) override;
+    model::Result<model::Rgb> set(model::Scene& scene, const std::string& target, const model::Rgb& value) override;
 };
 
 } // namespace regio::editor

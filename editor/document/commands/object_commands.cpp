@@ -14,9 +14,9 @@ namespace regio::editor {
 // --- AddObject ---------------------------------------------------------------
 
 AddObject::AddObject(SceneDocument* document, model::Object object, int index)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add %1")
-                                 .arg(toQString(object.id))),
-      m_object(std::move(object)), m_index(index)
+    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add %1").arg(toQString(object.id)))
+    , m_object(std::move(object))
+    , m_index(index)
 {
 }
 
@@ -43,9 +43,9 @@ void AddObject::undo()
 // --- RemoveObject ------------------------------------------------------------
 
 RemoveObject::RemoveObject(SceneDocument* document, std::string objectId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Delete %1")
-                                 .arg(toQString(objectId))),
-      m_objectId(std::move(objectId))
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Delete %1").arg(toQString(objectId)))
+    , m_objectId(std::move(objectId))
 {
 }
 
@@ -68,9 +68,9 @@ void RemoveObject::undo()
 // --- DuplicateObject ---------------------------------------------------------
 
 DuplicateObject::DuplicateObject(SceneDocument* document, std::string objectId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Duplicate %1")
-                                 .arg(toQString(objectId))),
-      m_objectId(std::move(objectId))
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Duplicate %1").arg(toQString(objectId)))
+    , m_objectId(std::move(objectId))
 {
 }
 
@@ -101,8 +101,9 @@ void DuplicateObject::undo()
 
 RenameObject::RenameObject(SceneDocument* document, std::string objectId, std::string newId)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Rename %1 to %2")
-                                 .arg(toQString(objectId), toQString(newId))),
-      m_from(std::move(objectId)), m_to(std::move(newId))
+                                 .arg(toQString(objectId), toQString(newId)))
+    , m_from(std::move(objectId))
+    , m_to(std::move(newId))
 {
 }
 
@@ -123,14 +124,14 @@ void RenameObject::undo()
 // --- SetObjectName -----------------------------------------------------------
 
 SetObjectName::SetObjectName(SceneDocument* document, std::string objectId, std::string name)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
-                                .arg(toQString(objectId), toQString(name)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
+                      .arg(toQString(objectId), toQString(name)),
                   Change::Objects, objectId, name, SetObjectNameId)
 {
 }
 
-model::Result<std::string> SetObjectName::set(model::Scene& scene, const std::string& target,
-                                              const std::string& value)
+model::Result<std::string> SetObjectName::set(model::Scene& scene, const std::string& target, const std::string& value)
 {
     return model::setObjectName(scene, target, value);
 }
@@ -138,7 +139,8 @@ model::Result<std::string> SetObjectName::set(model::Scene& scene, const std::st
 // --- ChangeObjectLayout ------------------------------------------------------
 
 ChangeObjectLayout::ChangeObjectLayout(SceneDocument* document, const QString& text, Edit edit)
-    : SceneCommand(document, text), m_edit(std::move(edit))
+    : SceneCommand(document, text)
+    , m_edit(std::move(edit))
 {
 }
 
@@ -174,11 +176,11 @@ ChangeObjectLayout* ChangeObjectLayout::groupParts(SceneDocument* document, std:
     });
 }
 
-ChangeObjectLayout* ChangeObjectLayout::groupObjects(SceneDocument* document,
-                                                     std::vector<std::string> objectIds, std::string objectId)
+ChangeObjectLayout* ChangeObjectLayout::groupObjects(SceneDocument* document, std::vector<std::string> objectIds,
+                                                     std::string objectId)
 {
-    const QString text = QCoreApplication::translate("regio::editor::Commands", "Group objects into %1")
-                             .arg(toQString(objectId));
+    const QString text =
+        QCoreApplication::translate("regio::editor::Commands", "Group objects into %1").arg(toQString(objectId));
     return new ChangeObjectLayout(document, text, [objectIds, objectId](model::Scene& scene) {
         return model::groupObjects(scene, objectIds, objectId);
     });
@@ -186,8 +188,7 @@ ChangeObjectLayout* ChangeObjectLayout::groupObjects(SceneDocument* document,
 
 ChangeObjectLayout* ChangeObjectLayout::ungroup(SceneDocument* document, std::string objectId)
 {
-    const QString text =
-        QCoreApplication::translate("regio::editor::Commands", "Ungroup %1").arg(toQString(objectId));
+    const QString text = QCoreApplication::translate("regio::editor::Commands", "Ungroup %1").arg(toQString(objectId));
     return new ChangeObjectLayout(document, text,
                                   [objectId](model::Scene& scene) { return model::ungroupObject(scene, objectId); });
 }
@@ -195,10 +196,10 @@ ChangeObjectLayout* ChangeObjectLayout::ungroup(SceneDocument* document, std::st
 ChangeObjectLayout* ChangeObjectLayout::moveParts(SceneDocument* document, std::vector<std::string> partIds,
                                                   std::string targetObjectId)
 {
-    const QString text = targetObjectId.empty()
-                             ? QCoreApplication::translate("regio::editor::Commands", "Make parts separate objects")
-                             : QCoreApplication::translate("regio::editor::Commands", "Move parts to %1")
-                                   .arg(toQString(targetObjectId));
+    const QString text =
+        targetObjectId.empty()
+            ? QCoreApplication::translate("regio::editor::Commands", "Make parts separate objects")
+            : QCoreApplication::translate("regio::editor::Commands", "Move parts to %1").arg(toQString(targetObjectId));
     return new ChangeObjectLayout(document, text, [partIds, targetObjectId](model::Scene& scene) {
         auto layout = layoutWithPartsMoved(scene, partIds, targetObjectId);
         if (!layout)
@@ -240,8 +241,7 @@ model::Result<model::ObjectLayout> layoutWithPartsMoved(const model::Scene& scen
                     continue;
                 // The ungroup rule: "table.legs" of "table" -> "table-legs".
                 const std::string prefix = object.id + ".";
-                const std::string rest =
-                    part.id.starts_with(prefix) ? part.id.substr(prefix.size()) : part.id;
+                const std::string rest = part.id.starts_with(prefix) ? part.id.substr(prefix.size()) : part.id;
                 std::string id = ids.fresh(object.id + "-" + rest);
                 entries.push_back({std::move(id), part.name, {part.id}});
             }

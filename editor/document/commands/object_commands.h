@@ -66,8 +66,7 @@ public:
     SetObjectName(SceneDocument* document, std::string objectId, std::string name);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 // Any regrouping of parts into objects: group, ungroup, moving parts to

@@ -11,9 +11,10 @@ namespace regio::editor {
 // --- AddPart -----------------------------------------------------------------
 
 AddPart::AddPart(SceneDocument* document, std::string objectId, model::Part part, int index)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add %1")
-                                 .arg(toQString(part.id))),
-      m_objectId(std::move(objectId)), m_part(std::move(part)), m_index(index)
+    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add %1").arg(toQString(part.id)))
+    , m_objectId(std::move(objectId))
+    , m_part(std::move(part))
+    , m_index(index)
 {
 }
 
@@ -40,9 +41,8 @@ void AddPart::undo()
 // --- RemovePart ----------------------------------------------------------------
 
 RemovePart::RemovePart(SceneDocument* document, std::string partId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Delete %1")
-                                 .arg(toQString(partId))),
-      m_partId(std::move(partId))
+    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Delete %1").arg(toQString(partId)))
+    , m_partId(std::move(partId))
 {
 }
 
@@ -65,9 +65,9 @@ void RemovePart::undo()
 // --- DuplicatePart -------------------------------------------------------------
 
 DuplicatePart::DuplicatePart(SceneDocument* document, std::string partId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Duplicate %1")
-                                 .arg(toQString(partId))),
-      m_partId(std::move(partId))
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Duplicate %1").arg(toQString(partId)))
+    , m_partId(std::move(partId))
 {
 }
 
@@ -98,8 +98,9 @@ void DuplicatePart::undo()
 
 RenamePart::RenamePart(SceneDocument* document, std::string partId, std::string newId)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Rename %1 to %2")
-                                 .arg(toQString(partId), toQString(newId))),
-      m_from(std::move(partId)), m_to(std::move(newId))
+                                 .arg(toQString(partId), toQString(newId)))
+    , m_from(std::move(partId))
+    , m_to(std::move(newId))
 {
 }
 
@@ -120,21 +121,22 @@ void RenamePart::undo()
 // --- names and materials ---------------------------------------------------------
 
 SetPartName::SetPartName(SceneDocument* document, std::string partId, std::string name)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
-                                .arg(toQString(partId), toQString(name)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
+                      .arg(toQString(partId), toQString(name)),
                   Change::Objects, partId, name, SetPartNameId)
 {
 }
 
-model::Result<std::string> SetPartName::set(model::Scene& scene, const std::string& target,
-                                            const std::string& value)
+model::Result<std::string> SetPartName::set(model::Scene& scene, const std::string& target, const std::string& value)
 {
     return model::setPartName(scene, target, value);
 }
 
 SetPartMaterial::SetPartMaterial(SceneDocument* document, std::string partId, std::string material)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Material of %1: %2")
-                                .arg(toQString(partId), toQString(material)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Material of %1: %2")
+                      .arg(toQString(partId), toQString(material)),
                   Change::Objects, partId, material)
 {
 }
@@ -166,8 +168,9 @@ model::Result<std::string> SetFaceMaterial::set(model::Scene& scene, const std::
 
 MovePart::MovePart(SceneDocument* document, std::string partId, std::string objectId, int index)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Move %1 to %2")
-                                 .arg(toQString(partId), toQString(objectId))),
-      m_partId(std::move(partId)), m_target{std::move(objectId), index}
+                                 .arg(toQString(partId), toQString(objectId)))
+    , m_partId(std::move(partId))
+    , m_target{std::move(objectId), index}
 {
 }
 
@@ -191,8 +194,9 @@ void MovePart::undo()
 
 RenameFace::RenameFace(SceneDocument* document, std::string faceId, std::string newId)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Rename %1 to %2")
-                                 .arg(toQString(faceId), toQString(newId))),
-      m_from(std::move(faceId)), m_to(std::move(newId))
+                                 .arg(toQString(faceId), toQString(newId)))
+    , m_from(std::move(faceId))
+    , m_to(std::move(newId))
 {
 }
 
@@ -212,15 +216,19 @@ void RenameFace::undo()
 
 // --- TransformParts ------------------------------------------------------------------
 
-TransformParts::TransformParts(SceneDocument* document, const QString& text) : SceneCommand(document, text) {}
+TransformParts::TransformParts(SceneDocument* document, const QString& text)
+    : SceneCommand(document, text)
+{
+}
 
-TransformParts::TransformParts(SceneDocument* document, std::vector<std::string> partIds,
-                               const glm::dmat4& transform, const QString& text)
-    : SceneCommand(document, text.isEmpty() ? QCoreApplication::translate("regio::editor::Commands",
-                                                                          "Transform %n part(s)", nullptr,
-                                                                          int(partIds.size()))
-                                            : text),
-      m_partIds(std::move(partIds)), m_transform(transform)
+TransformParts::TransformParts(SceneDocument* document, std::vector<std::string> partIds, const glm::dmat4& transform,
+                               const QString& text)
+    : SceneCommand(document, text.isEmpty()
+                                 ? QCoreApplication::translate("regio::editor::Commands", "Transform %n part(s)",
+                                                               nullptr, int(partIds.size()))
+                                 : text)
+    , m_partIds(std::move(partIds))
+    , m_transform(transform)
 {
 }
 
@@ -286,10 +294,12 @@ void TransformParts::undo()
 
 SplitPart::SplitPart(SceneDocument* document, std::string partId, const model::Plane& plane, std::string frontId,
                      std::string backId, model::CutCaps caps)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Split %1")
-                                 .arg(toQString(partId))),
-      m_partId(std::move(partId)), m_plane(plane), m_frontId(std::move(frontId)), m_backId(std::move(backId)),
-      m_caps(caps)
+    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Split %1").arg(toQString(partId)))
+    , m_partId(std::move(partId))
+    , m_plane(plane)
+    , m_frontId(std::move(frontId))
+    , m_backId(std::move(backId))
+    , m_caps(caps)
 {
 }
 

@@ -64,8 +64,7 @@ public:
     SetPartName(SceneDocument* document, std::string partId, std::string name);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 // The part's default material (faces without their own use it).
@@ -74,8 +73,7 @@ public:
     SetPartMaterial(SceneDocument* document, std::string partId, std::string material);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 // Moves a part to another object (or another place in its own).
@@ -108,8 +106,7 @@ public:
     SetFaceMaterial(SceneDocument* document, std::string faceId, std::string material);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 // An affine transform of parts. Undo puts the exact previous numbers back.

@@ -7,9 +7,9 @@
 namespace regio::editor {
 
 ClipPartToRegions::ClipPartToRegions(SceneDocument* document, std::string partId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Clip %1 to regions")
-                                 .arg(toQString(partId))),
-      m_partId(std::move(partId))
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Clip %1 to regions").arg(toQString(partId)))
+    , m_partId(std::move(partId))
 {
 }
 

@@ -8,9 +8,10 @@
 namespace regio::editor {
 
 AddRegion::AddRegion(SceneDocument* document, model::Region region, int index)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Add region %1")
-                                 .arg(toQString(region.id))),
-      m_region(std::move(region)), m_index(index)
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Add region %1").arg(toQString(region.id)))
+    , m_region(std::move(region))
+    , m_index(index)
 {
 }
 
@@ -31,9 +32,9 @@ void AddRegion::undo()
 }
 
 RemoveRegion::RemoveRegion(SceneDocument* document, std::string regionId)
-    : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Delete region %1")
-                                 .arg(toQString(regionId))),
-      m_regionId(std::move(regionId))
+    : SceneCommand(document,
+                   QCoreApplication::translate("regio::editor::Commands", "Delete region %1").arg(toQString(regionId)))
+    , m_regionId(std::move(regionId))
 {
 }
 
@@ -55,8 +56,9 @@ void RemoveRegion::undo()
 
 RenameRegion::RenameRegion(SceneDocument* document, std::string regionId, std::string newId)
     : SceneCommand(document, QCoreApplication::translate("regio::editor::Commands", "Rename %1 to %2")
-                                 .arg(toQString(regionId), toQString(newId))),
-      m_from(std::move(regionId)), m_to(std::move(newId))
+                                 .arg(toQString(regionId), toQString(newId)))
+    , m_from(std::move(regionId))
+    , m_to(std::move(newId))
 {
 }
 
@@ -75,22 +77,22 @@ void RenameRegion::undo()
 }
 
 SetRegionName::SetRegionName(SceneDocument* document, std::string regionId, std::string name)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
-                                .arg(toQString(regionId), toQString(name)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Name %1 \"%2\"")
+                      .arg(toQString(regionId), toQString(name)),
                   Change::Regions, regionId, name, SetRegionNameId)
 {
 }
 
-model::Result<std::string> SetRegionName::set(model::Scene& scene, const std::string& target,
-                                              const std::string& value)
+model::Result<std::string> SetRegionName::set(model::Scene& scene, const std::string& target, const std::string& value)
 {
     return model::setRegionName(scene, target, value);
 }
 
 SetRegionBox::SetRegionBox(SceneDocument* document, std::string regionId, const model::Vec3& min,
                            const model::Vec3& max)
-    : ChangeValue(document, QCoreApplication::translate("regio::editor::Commands", "Resize region %1")
-                                .arg(toQString(regionId)),
+    : ChangeValue(document,
+                  QCoreApplication::translate("regio::editor::Commands", "Resize region %1").arg(toQString(regionId)),
                   Change::Regions, regionId, model::RegionBox{min, max}, SetRegionBoxId)
 {
 }

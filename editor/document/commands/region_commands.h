@@ -45,8 +45,7 @@ public:
     SetRegionName(SceneDocument* document, std::string regionId, std::string name);
 
 protected:
-    model::Result<std::string> set(model::Scene& scene, const std::string& target,
-                                   const std::string& value) override;
+    model::Result<std::string> set(model::Scene& scene, const std::string& target, const std::string& value) override;
 };
 
 // Resizing a box by dragging or scrubbing merges into one step.

@@ -3,7 +3,8 @@
 namespace regio::editor {
 
 SceneCommand::SceneCommand(SceneDocument* document, const QString& text, QUndoCommand* parent)
-    : QUndoCommand(text, parent), m_document(document)
+    : QUndoCommand(text, parent)
+    , m_document(document)
 {
 }
 

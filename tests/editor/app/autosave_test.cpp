@@ -7,8 +7,8 @@
 
 #include <QFile>
 #include <QProcess>
-#include <QSysInfo>
 #include <QSignalSpy>
+#include <QSysInfo>
 #include <QTemporaryDir>
 
 #include <memory>

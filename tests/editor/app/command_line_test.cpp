@@ -22,9 +22,9 @@ private slots:
 
     void aSceneAScreenshotAndASizeAreAllRead()
     {
-        const CommandLineOptions o = parseCommandLine(
-            {QStringLiteral("regio"), QStringLiteral("room.json"), QStringLiteral("--screenshot"),
-             QStringLiteral("out.png"), QStringLiteral("--size"), QStringLiteral("1600x1000")});
+        const CommandLineOptions o =
+            parseCommandLine({QStringLiteral("regio"), QStringLiteral("room.json"), QStringLiteral("--screenshot"),
+                              QStringLiteral("out.png"), QStringLiteral("--size"), QStringLiteral("1600x1000")});
         QVERIFY(o.ok);
         QCOMPARE(o.scenePath, QStringLiteral("room.json"));
         QCOMPARE(o.screenshotPath, QStringLiteral("out.png"));

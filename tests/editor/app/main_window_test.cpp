@@ -1,7 +1,7 @@
 // The main window: title, file workflow, recent files, settings.
-#include "editor/document/commands/object_commands.h"
 #include "editor/app/main_window.h"
 #include "editor/app/recent_files.h"
+#include "editor/document/commands/object_commands.h"
 #include "support/editor_documents.h"
 #include "support/qt_test_registry.h"
 
@@ -125,7 +125,8 @@ private slots:
         QCOMPARE(findAction(window.get(), QStringLiteral("Open…"))->shortcut(), QKeySequence(QKeySequence::Open));
         QCOMPARE(findAction(window.get(), QStringLiteral("Save"))->shortcut(), QKeySequence(QKeySequence::Save));
         QCOMPARE(findAction(window.get(), QStringLiteral("New"))->shortcut(), QKeySequence(QKeySequence::New));
-        QVERIFY(findAction(window.get(), QStringLiteral("Undo"))->shortcuts().contains(QKeySequence(QKeySequence::Undo)));
+        QVERIFY(
+            findAction(window.get(), QStringLiteral("Undo"))->shortcuts().contains(QKeySequence(QKeySequence::Undo)));
     }
 
     void undoAndRedoActionsDriveTheDocumentsStack()

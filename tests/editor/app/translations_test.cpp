@@ -5,12 +5,12 @@
 #include "support/qt_test_registry.h"
 
 #include <QDir>
-#include <QXmlStreamReader>
 #include <QFile>
 #include <QMenuBar>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTranslator>
+#include <QXmlStreamReader>
 
 #include <memory>
 
@@ -78,12 +78,13 @@ private slots:
         lupdate.start(QStringLiteral(REGIO_LUPDATE),
                       {QStringLiteral("-no-obsolete"), QStringLiteral("-locations"), QStringLiteral("none"),
                        QStringLiteral("-extensions"), QStringLiteral("cpp,h"), QStringLiteral("-I"),
-                       QStringLiteral(REGIO_SOURCE_DIR),
-                       QStringLiteral(REGIO_SOURCE_DIR "/editor"), QStringLiteral("-ts"), copy});
+                       QStringLiteral(REGIO_SOURCE_DIR), QStringLiteral(REGIO_SOURCE_DIR "/editor"),
+                       QStringLiteral("-ts"), copy});
         QVERIFY(lupdate.waitForFinished(120000));
         QCOMPARE(lupdate.exitCode(), 0);
         const QStringList missing = untranslated(copy);
-        QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not in regio_cs.ts: ") + missing.join(QStringLiteral(" | "))));
+        QVERIFY2(missing.isEmpty(),
+                 qPrintable(QStringLiteral("not in regio_cs.ts: ") + missing.join(QStringLiteral(" | "))));
     }
 
     void choosingCzechTranslatesTheWindow()

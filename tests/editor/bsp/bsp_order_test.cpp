@@ -2,11 +2,11 @@
 // orders survive save and load, the figures the dock shows are the ones
 // regio-solve reports for the same file, the suggested order is shown before
 // it is applied, and the tree and fragment views follow the solver's trees.
+#include "editor/app/main_window.h"
 #include "editor/bsp/bsp_analysis.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/bsp_layers.h"
 #include "editor/bsp/bsp_order_dock.h"
-#include "editor/app/main_window.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
@@ -50,9 +50,8 @@ QJsonObject solveReportBsp(const QString& scenePath, const char* regionsMode)
 {
     test::ScratchDir scratch;
     const std::string report = (scratch / "report.json").string();
-    const test::CommandRun run = test::runRegioSolve(
-        {"solve", toStd(scenePath), "--iterations", "1", "--hemicube", "8", "--regions", regionsMode, "--quiet",
-         "--report", report});
+    const test::CommandRun run = test::runRegioSolve({"solve", toStd(scenePath), "--iterations", "1", "--hemicube", "8",
+                                                      "--regions", regionsMode, "--quiet", "--report", report});
     if (!run.exited || run.exitCode != 0)
         qFatal("regio-solve failed: %s", run.err.c_str());
     return QJsonDocument::fromJson(QByteArray::fromStdString(test::readText(report))).object()["bsp"].toObject();
@@ -306,7 +305,8 @@ private slots:
             bsp->setCurrentRegion(region.id);
             const QJsonObject figures = perRegion(authored, toQString(region.id));
             QVERIFY(!figures.isEmpty());
-            QCOMPARE(dock->figure(BspOrderDock::FragmentsRow, BspOrderDock::RegionColumn), figures["fragments"].toInt());
+            QCOMPARE(dock->figure(BspOrderDock::FragmentsRow, BspOrderDock::RegionColumn),
+                     figures["fragments"].toInt());
             QCOMPARE(dock->figure(BspOrderDock::SplitsRow, BspOrderDock::RegionColumn), figures["splits"].toInt());
             QCOMPARE(dock->figure(BspOrderDock::DepthRow, BspOrderDock::RegionColumn), figures["depth"].toInt());
         }
@@ -352,8 +352,10 @@ private slots:
         clock.start();
         const BspAnalysis analysis = analyseBsp(scene);
         const qint64 analysing = clock.elapsed();
-        const model::Result<solver::SceneBspFigures> authored = solver::computeBspFigures(scene, {solver::RegionsMode::Authored});
-        const model::Result<solver::SceneBspFigures> single = solver::computeBspFigures(scene, {solver::RegionsMode::None});
+        const model::Result<solver::SceneBspFigures> authored =
+            solver::computeBspFigures(scene, {solver::RegionsMode::Authored});
+        const model::Result<solver::SceneBspFigures> single =
+            solver::computeBspFigures(scene, {solver::RegionsMode::None});
         QVERIFY(analysis.authored && authored.ok() && analysis.baseline && single.ok());
         QCOMPARE(analysis.authored->fragments, authored->fragments);
         QCOMPARE(analysis.authored->splits, authored->splits);
@@ -375,10 +377,11 @@ private slots:
         const qint64 applying = clock.elapsed();
         QVERIFY(bsp->analyser()->stale());
         QTRY_VERIFY_WITH_TIMEOUT(!bsp->analyser()->stale(), 60000);
-        qInfo("100-object room, %d regions: analysis %lld ms (worker), suggestion for one region %lld ms, "
-              "applying it %lld ms on the UI thread; %d fragments against %d for a single BSP",
-              int(scene.regions.size()), analysing, suggesting, applying, analysis.authored->fragments,
-              analysis.baseline->fragments);
+        qInfo(
+            "100-object room, %d regions: analysis %lld ms (worker), suggestion for one region %lld ms, "
+            "applying it %lld ms on the UI thread; %d fragments against %d for a single BSP",
+            int(scene.regions.size()), analysing, suggesting, applying, analysis.authored->fragments,
+            analysis.baseline->fragments);
     }
 
     void suggestedOrdersInEveryRegionGiveNoMoreFragmentsThanSceneOrder_data()
@@ -419,11 +422,12 @@ private slots:
         QVERIFY(suggested.authored->fragments <= sceneOrder.fragments);
         QVERIFY(suggested.authored->fragments < suggested.baseline->fragments ||
                 suggested.authored->fragments == sceneOrder.fragments);
-        qInfo("%s, %d regions: scene order %d fragments (%d splits, depth %d); suggested orders %d (%d splits, "
-              "depth %d); single BSP with those orders concatenated %d",
-              qPrintable(name), int(scene.regions.size()), sceneOrder.fragments, sceneOrder.splits,
-              sceneOrder.maxDepth, suggested.authored->fragments, suggested.authored->splits,
-              suggested.authored->maxDepth, suggested.baseline->fragments);
+        qInfo(
+            "%s, %d regions: scene order %d fragments (%d splits, depth %d); suggested orders %d (%d splits, "
+            "depth %d); single BSP with those orders concatenated %d",
+            qPrintable(name), int(scene.regions.size()), sceneOrder.fragments, sceneOrder.splits, sceneOrder.maxDepth,
+            suggested.authored->fragments, suggested.authored->splits, suggested.authored->maxDepth,
+            suggested.baseline->fragments);
     }
 
     void theTreeViewShowsTheRegionsBspAndHighlightsTheSelectedNodesPlane()

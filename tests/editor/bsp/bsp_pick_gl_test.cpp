@@ -2,16 +2,16 @@
 // "pick face to insert" adds exactly that face to the region's BSP order (one
 // undo step), and a click with "painter order from point / patch" starts the
 // playback that equals the solver's traversal from the clicked spot.
+#include "editor/app/main_window.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/face_pick_tool.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/app/main_window.h"
 #include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
 #include "model/geometry/region_clip.h"
-#include "solver/visibility/painter_order.h"
 #include "solver/solver.h"
+#include "solver/visibility/painter_order.h"
 #include "support/editor_documents.h"
 #include "support/editor_windows.h"
 #include "support/qt_test_registry.h"

@@ -2,10 +2,10 @@
 // replays is the solver's traversal from the same point, element for element,
 // on the solver's own preparation of the scene; stepping and playing only
 // change how much of it is shown.
+#include "editor/app/main_window.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/bsp/bsp_layers.h"
 #include "editor/bsp/painter_playback.h"
-#include "editor/app/main_window.h"
 #include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "solver/authoring/region_proposal.h"
@@ -38,8 +38,8 @@ std::unique_ptr<MainWindow> makeWindow(const QString& scene)
 // Solver made from the same scene, as regio-solve makes it): the node walk of
 // solver/visibility/traversal.h, and the painted elements of solver/visibility/painter_order.h,
 // which the solver's tests hold equal to what Visibility paints.
-void compareWithSolver(const solver::PainterOrder& order, const solver::PreparedScene& prepared,
-                       const model::Vec3& eye, const model::Plane* cull)
+void compareWithSolver(const solver::PainterOrder& order, const solver::PreparedScene& prepared, const model::Vec3& eye,
+                       const model::Plane* cull)
 {
     std::vector<int> nodes;
     solver::backToFrontNodes(prepared, eye, cull, nodes);
@@ -113,7 +113,8 @@ private slots:
         // The patch under the point: its triangle holds it.
         QCOMPARE(playback->patchAt("lamp1.panel.ny", p.centroid), patch);
         // The shooter sits at the patch centroid on its face's plane (ShooterFrame::make).
-        const model::Plane plane = model::Plane::fromPointNormal(p.centroid, prepared.properties[size_t(p.properties)].plane.normal);
+        const model::Plane plane =
+            model::Plane::fromPointNormal(p.centroid, prepared.properties[size_t(p.properties)].plane.normal);
         compareWithSolver(*playback->order(), prepared, p.centroid, &plane);
     }
 

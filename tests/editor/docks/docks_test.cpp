@@ -1,5 +1,6 @@
 // The docks are views of the document: they show it, follow its selection,
 // and edit it only through undo commands.
+#include "editor/app/main_window.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/diagnostics_model.h"
 #include "editor/docks/materials_dock.h"
@@ -7,7 +8,6 @@
 #include "editor/docks/scene_tree_dock.h"
 #include "editor/docks/scene_tree_model.h"
 #include "editor/docks/vector_editor.h"
-#include "editor/app/main_window.h"
 #include "editor/document/commands/part_commands.h"
 #include "editor/document/commands/region_commands.h"
 #include "support/editor_documents.h"
@@ -92,8 +92,8 @@ private slots:
         auto window = makeWindow(test::smallScene());
         SceneTreeModel* model = dock<SceneTreeDock>(window.get())->model();
         QSignalSpy resets(model, &QAbstractItemModel::modelReset);
-        window->document()->push(new TransformParts(window->document(), {"crate.body"},
-                                                    glm::translate(glm::dmat4(1.0), {0.0, 1.0, 0.0})));
+        window->document()->push(
+            new TransformParts(window->document(), {"crate.body"}, glm::translate(glm::dmat4(1.0), {0.0, 1.0, 0.0})));
         QCOMPARE(resets.count(), 0);
     }
 

@@ -186,7 +186,8 @@ private slots:
         test::resetDocument(document, test::smallScene());
         QSignalSpy objects(&document, &SceneDocument::objectsChanged);
         QSignalSpy geometry(&document, &SceneDocument::geometryChanged);
-        document.push(new TransformParts(&document, {"crate.body"}, glm::dmat4(2.0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)));
+        document.push(new TransformParts(&document, {"crate.body"},
+                                         glm::dmat4(2.0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)));
         QCOMPARE(geometry.count(), 1);
         QCOMPARE(objects.count(), 0);
         document.undoStack()->undo();

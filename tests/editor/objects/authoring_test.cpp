@@ -1,8 +1,8 @@
 // Whole-part authoring as the menus drive it: each action is one undo step
 // that leaves a valid scene.
-#include "editor/objects/authoring.h"
 #include "editor/app/main_window.h"
 #include "editor/app/preferences_dialog.h"
+#include "editor/objects/authoring.h"
 #include "editor/objects/primitive_dialog.h"
 #include "editor/viewport/viewport.h"
 #include "model/validation/validation.h"

@@ -5,11 +5,11 @@
 // controls change what the preview solves; the status bar counts the elements
 // of the growing mesh.
 #include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
 #include "editor/preview/preview_runner.h"
 #include "editor/preview/solver_dock.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "stop_during_round.h"
 #include "support/editor_documents.h"

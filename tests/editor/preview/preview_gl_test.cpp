@@ -3,13 +3,13 @@
 // the --preview-iterations screenshot shows the lit scene; the mesh overlay
 // draws anchoring edges on screen. That the UI thread keeps running while the
 // viewport uploads the solution: preview_gl_timing_test.cpp.
+#include "editor/app/main_window.h"
 #include "editor/document/commands/material_commands.h"
 #include "editor/document/commands/solver_settings_commands.h"
-#include "editor/app/main_window.h"
+#include "editor/document/scene_document.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "model/edit/edit_materials.h"
 #include "support/editor_documents.h"
@@ -110,8 +110,9 @@ private slots:
             }
             case 4: preview->run(); break;
             case 5: preview->runner()->stop(); break;
-            case 6: preview->runner()->state() == PreviewState::Paused ? preview->runner()->resume()
-                                                                       : preview->runner()->pause();
+            case 6:
+                preview->runner()->state() == PreviewState::Paused ? preview->runner()->resume()
+                                                                   : preview->runner()->pause();
                 break;
             case 7: preview->runner()->reset(); break;
             }
@@ -176,9 +177,12 @@ private slots:
             display.showMesh = true;
             preview->setDisplay(display);
             preview->runIterations(6);
-            if (!QTest::qWaitFor([&] { return preview->runner()->state() == PreviewState::Finished &&
-                                              !preview->runner()->frame()->running && preview->layersCurrent(); },
-                                 60000))
+            if (!QTest::qWaitFor(
+                    [&] {
+                        return preview->runner()->state() == PreviewState::Finished &&
+                               !preview->runner()->frame()->running && preview->layersCurrent();
+                    },
+                    60000))
                 return -1;
             if (preview->runner()->frame()->snapshot.stats.adaptiveRounds == 0)
                 return -2;
@@ -218,8 +222,7 @@ private slots:
         const double difference = meanDifference(a, b);
         const QRect middle(b.width() / 3, b.height() / 3, b.width() / 3, b.height() / 3);
         const int colours = distinctColours(b, middle);
-        qInfo("mean difference %.1f levels, %d distinct colours in the middle of the lit picture", difference,
-              colours);
+        qInfo("mean difference %.1f levels, %d distinct colours in the middle of the lit picture", difference, colours);
         QVERIFY(difference > 3.0);
         QVERIFY(colours > 30); // shading, not a blank or flat picture
     }

@@ -48,8 +48,8 @@ private slots:
         gaps.stop();
         const qint64 longest = gaps.longestMs();
         preview->runner()->stop();
-        qInfo("longest UI gap %lld ms with the viewport drawing (%d solution updates in 3 s, %d elements)", longest, frames,
-              preview->runner()->frame()->snapshot.stats.elements);
+        qInfo("longest UI gap %lld ms with the viewport drawing (%d solution updates in 3 s, %d elements)", longest,
+              frames, preview->runner()->frame()->snapshot.stats.elements);
         QVERIFY(frames >= 6);
         // Here the UI thread also rasterises every frame in software (Mesa
         // llvmpipe): the solver's own share is bounded in preview_runner_timing_test

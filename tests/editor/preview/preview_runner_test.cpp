@@ -2,8 +2,9 @@
 // equality with regio-solve, stop/pause/reset, the layers the viewport gets
 // while solving, the inspector, the hemicube view, exports. How fast they
 // answer while solving: preview_runner_timing_test.cpp.
-#include "editor/document/commands/solver_settings_commands.h"
 #include "editor/app/main_window.h"
+#include "editor/document/commands/solver_settings_commands.h"
+#include "editor/document/scene_document.h"
 #include "editor/preview/convergence_plot.h"
 #include "editor/preview/preview_controller.h"
 #include "editor/preview/preview_display.h"
@@ -11,7 +12,6 @@
 #include "editor/preview/preview_inspector.h"
 #include "editor/preview/preview_runner.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "preview_scenes.h"
 #include "support/command_run.h"
@@ -67,13 +67,13 @@ private slots:
         QTest::addColumn<bool>("anchoring");
         QTest::newRow("cornell-box") << QStringLiteral("cornell-box") << 40 << true << true;
         QTest::newRow("two-lights-room") << QStringLiteral("two-lights-room") << 25 << true << true;
-        QTest::newRow("cornell-box, adaptive subdivision without anchoring") << QStringLiteral("cornell-box") << 40
-                                                                             << true << false;
+        QTest::newRow("cornell-box, adaptive subdivision without anchoring")
+            << QStringLiteral("cornell-box") << 40 << true << false;
         QTest::newRow("two-lights-room, adaptive subdivision without anchoring")
             << QStringLiteral("two-lights-room") << 25 << true << false;
         QTest::newRow("cornell-box, no adaptive subdivision") << QStringLiteral("cornell-box") << 40 << false << true;
-        QTest::newRow("two-lights-room, no adaptive subdivision") << QStringLiteral("two-lights-room") << 25
-                                                                  << false << true;
+        QTest::newRow("two-lights-room, no adaptive subdivision")
+            << QStringLiteral("two-lights-room") << 25 << false << true;
     }
     void previewAfterNStepsEqualsRegioSolveIterationsN()
     {
@@ -266,8 +266,8 @@ private slots:
             QTest::qWait(40);
         }
         QVERIFY(preview->runner()->isStale());
-        QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Finished && !preview->runner()->isStale() &&
-                                     !preview->runner()->frame()->running,
+        QTRY_VERIFY_WITH_TIMEOUT(preview->runner()->state() == PreviewState::Finished &&
+                                     !preview->runner()->isStale() && !preview->runner()->frame()->running,
                                  30000);
         int preparing = 0;
         for (const QList<QVariant>& args : states)

@@ -3,9 +3,9 @@
 // the --preview-iterations option.
 #include "editor/app/command_line.h"
 #include "editor/document/commands/solver_settings_commands.h"
+#include "editor/document/scene_document.h"
 #include "editor/preview/solver_dock.h"
 #include "editor/preview/solver_presets.h"
-#include "editor/document/scene_document.h"
 #include "solver/prepare/prepare.h"
 #include "support/editor_documents.h"
 #include "support/qt_test_registry.h"
@@ -96,28 +96,38 @@ private slots:
              [](const auto& s) { return s.patchSize == 0.75; }},
             {"elementsPerPatch", [&] { dock.findChild<QSpinBox*>("elementsPerPatch")->setValue(9); },
              [](const auto& s) { return s.elementsPerPatch == 9; }},
-            {"adaptive", [&] { dock.findChild<QGroupBox*>("adaptive")->setChecked(!document.scene().solver.adaptive.enabled); },
-             [&](const auto& s) { return s.adaptive.enabled != test::loadSample("two-lights-room").solver.adaptive.enabled; }},
+            {"adaptive",
+             [&] { dock.findChild<QGroupBox*>("adaptive")->setChecked(!document.scene().solver.adaptive.enabled); },
+             [&](const auto& s) {
+                 return s.adaptive.enabled != test::loadSample("two-lights-room").solver.adaptive.enabled;
+             }},
             {"threshold", [&] { dock.findChild<QDoubleSpinBox*>("threshold")->setValue(0.2); },
              [](const auto& s) { return std::abs(s.adaptive.threshold - 0.2) < 1e-12; }},
             {"minEdge", [&] { dock.findChild<QDoubleSpinBox*>("minEdge")->setValue(0.05); },
              [](const auto& s) { return std::abs(s.adaptive.minEdge - 0.05) < 1e-12; }},
-            {"anchoring", [&] { dock.findChild<QCheckBox*>("anchoring")->setChecked(!document.scene().solver.adaptive.anchoring); },
-             [&](const auto& s) { return s.adaptive.anchoring != test::loadSample("two-lights-room").solver.adaptive.anchoring; }},
+            {"anchoring",
+             [&] { dock.findChild<QCheckBox*>("anchoring")->setChecked(!document.scene().solver.adaptive.anchoring); },
+             [&](const auto& s) {
+                 return s.adaptive.anchoring != test::loadSample("two-lights-room").solver.adaptive.anchoring;
+             }},
             {"maxIterations", [&] { dock.findChild<QSpinBox*>("maxIterations")->setValue(1234); },
              [](const auto& s) { return s.maxIterations == 1234; }},
             {"convergence", [&] { dock.findChild<QDoubleSpinBox*>("convergence")->setValue(0.002); },
              [](const auto& s) { return std::abs(s.convergence - 0.002) < 1e-12; }},
-            {"visibility", [&] {
+            {"visibility",
+             [&] {
                  auto* c = dock.findChild<QComboBox*>("visibility");
                  c->setCurrentIndex(1);
                  emit c->activated(1);
-             }, [](const auto& s) { return s.visibility == model::Visibility::ZBuffer; }},
-            {"regions", [&] {
+             },
+             [](const auto& s) { return s.visibility == model::Visibility::ZBuffer; }},
+            {"regions",
+             [&] {
                  auto* c = dock.findChild<QComboBox*>("regions");
                  c->setCurrentIndex(2);
                  emit c->activated(2);
-             }, [](const auto& s) { return s.regions == model::RegionsMode::Auto; }},
+             },
+             [](const auto& s) { return s.regions == model::RegionsMode::Auto; }},
         };
         for (const Case& c : cases) {
             const model::Scene before = document.scene();
@@ -195,12 +205,13 @@ private slots:
     void previewIterationsNeedsAScreenshotAndACount()
     {
         const QString app = QStringLiteral("regio");
-        CommandLineOptions o = parseCommandLine({app, QStringLiteral("s.json"), QStringLiteral("--screenshot"),
-                                                 QStringLiteral("a.png"), QStringLiteral("--preview-iterations"),
-                                                 QStringLiteral("25")});
+        CommandLineOptions o =
+            parseCommandLine({app, QStringLiteral("s.json"), QStringLiteral("--screenshot"), QStringLiteral("a.png"),
+                              QStringLiteral("--preview-iterations"), QStringLiteral("25")});
         QVERIFY(o.ok);
         QCOMPARE(o.previewIterations, 25);
-        QCOMPARE(parseCommandLine({app, QStringLiteral("--screenshot"), QStringLiteral("a.png")}).previewIterations, -1);
+        QCOMPARE(parseCommandLine({app, QStringLiteral("--screenshot"), QStringLiteral("a.png")}).previewIterations,
+                 -1);
         QVERIFY(!parseCommandLine({app, QStringLiteral("--preview-iterations"), QStringLiteral("5")}).ok);
         QVERIFY(!parseCommandLine({app, QStringLiteral("--screenshot"), QStringLiteral("a.png"),
                                    QStringLiteral("--preview-iterations"), QStringLiteral("-1")})

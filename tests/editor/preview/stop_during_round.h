@@ -17,11 +17,11 @@
 namespace regio::test {
 
 struct StopTrial {
-    QString failure;           // empty, or the step that did not happen
-    qint64 latencyMs = -1;     // from Stop to the runner's Finished state
-    int round = 0;             // the refinement round of the frame Stop followed
-    int elements = 0;          // and its element count
-    bool insideRound = false;  // the Stop cut a refinement round short
+    QString failure;          // empty, or the step that did not happen
+    qint64 latencyMs = -1;    // from Stop to the runner's Finished state
+    int round = 0;            // the refinement round of the frame Stop followed
+    int elements = 0;         // and its element count
+    bool insideRound = false; // the Stop cut a refinement round short
 };
 
 // Solves bigRoundsRoom() and presses Stop `delayMs` after the first frame that

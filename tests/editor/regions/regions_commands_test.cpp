@@ -1,15 +1,15 @@
 // Region authoring edits: resizing by handle drags (one undo step per drag),
 // clipping a straddling part to the regions, accepting or discarding a
 // proposal of automatic regions, and all of it surviving save and load.
-#include "editor/document/commands/region_clip_command.h"
 #include "editor/document/commands/part_commands.h"
+#include "editor/document/commands/region_clip_command.h"
 #include "editor/document/commands/region_commands.h"
+#include "editor/document/scene_document.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_drag_command.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "model/geometry/region_clip.h"
 #include "solver/authoring/region_proposal.h"
@@ -142,8 +142,7 @@ private slots:
         QCOMPARE(a.document.undoStack()->count(), 1);
         QVERIFY(a.document.scene().findPart("table.desk"));
         QVERIFY(a.document.scene().findPart("crate.body-right"));
-        QVERIFY(a.document.selection() ==
-                Selection::of(SelectionKind::Part, {"crate.body-left", "crate.body-right"}));
+        QVERIFY(a.document.selection() == Selection::of(SelectionKind::Part, {"crate.body-left", "crate.body-right"}));
         VERIFY_UNDO_REDO(a.document, straddlingScene());
     }
 
@@ -231,10 +230,10 @@ private slots:
         QMenu menu;
         a.regions->populateRegionsMenu(&menu);
         const QList<QAction*> actions = menu.actions();
-        for (QAction* action : {a.regions->drawAction(), a.regions->proposeAction(), a.regions->acceptAction(),
-                                a.regions->discardAction(), a.regions->clipSelectedAction(),
-                                a.regions->showBoxesAction(), a.regions->colourByRegionAction(),
-                                a.regions->showPlanesAction()})
+        for (QAction* action :
+             {a.regions->drawAction(), a.regions->proposeAction(), a.regions->acceptAction(),
+              a.regions->discardAction(), a.regions->clipSelectedAction(), a.regions->showBoxesAction(),
+              a.regions->colourByRegionAction(), a.regions->showPlanesAction()})
             QVERIFY2(actions.contains(action), qPrintable(action->text()));
         QVERIFY(a.regions->drawAction()->isCheckable());
         // Clipping is offered only for a selection that straddles.

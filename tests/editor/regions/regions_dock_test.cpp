@@ -2,20 +2,20 @@
 // fragment counts per region, selection kept in step with the document, the
 // regional tree as the solver builds it, the viewport layers, and the live
 // straddle diagnostic with its one-click fix.
-#include "editor/document/commands/region_commands.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/diagnostics_model.h"
+#include "editor/document/commands/region_commands.h"
 #include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_figures.h"
 #include "editor/regions/region_layers.h"
 #include "editor/regions/regions_dock.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "region_fixture.h"
 #include "solver/authoring/bsp_figures.h"
-#include "solver/prepare/prepare.h"
 #include "solver/authoring/region_proposal.h"
+#include "solver/prepare/prepare.h"
 #include "support/command_run.h"
 #include "support/editor_documents.h"
 #include "support/furnished_room.h"
@@ -25,9 +25,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QTemporaryDir>
 #include <QLabel>
 #include <QMainWindow>
+#include <QTemporaryDir>
 #include <QTreeView>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -197,8 +197,7 @@ private slots:
 
         f.dock()->regionList()->clearSelection();
         f.dock()->regionList()->topLevelItem(0)->setSelected(true);
-        QVERIFY(f.document.selection() ==
-                Selection::single(SelectionKind::Region, f.document.scene().regions[0].id));
+        QVERIFY(f.document.selection() == Selection::single(SelectionKind::Region, f.document.scene().regions[0].id));
     }
 
     void editingTheIdAndNameInTheListRenamesThroughCommands()
@@ -339,12 +338,12 @@ private slots:
         RegionFixture f(test::smallScene());
         QVERIFY(f.document.push(new AddRegion(&f.document, {"inner", "", {0, 0, 0}, {1, 1, 1}, {}})));
         QTRY_VERIFY(findDiagnostic(f.diagnostics->model(), QStringLiteral("overlaps")) >= 0);
-        QVERIFY(f.dock()->regionList()->topLevelItem(1)->toolTip(RegionsDock::IdColumn).contains(
-            QStringLiteral("left")));
+        QVERIFY(
+            f.dock()->regionList()->topLevelItem(1)->toolTip(RegionsDock::IdColumn).contains(QStringLiteral("left")));
         // The fix is offered only where it exists: not on an overlap.
         QTreeView* view = f.diagnostics->view();
-        view->setCurrentIndex(f.diagnostics->model()->index(findDiagnostic(f.diagnostics->model(),
-                                                                           QStringLiteral("overlaps")), 0));
+        view->setCurrentIndex(
+            f.diagnostics->model()->index(findDiagnostic(f.diagnostics->model(), QStringLiteral("overlaps")), 0));
         QVERIFY(!view->findChild<QAction*>(QStringLiteral("ClipPartToRegionsFix"))->isEnabled());
         // No regional tree while they overlap.
         QCOMPARE(f.dock()->treeView()->topLevelItemCount(), 1);

@@ -3,10 +3,10 @@
 // it by a face handle (one undo step per drag), and Esc.
 #include "editor/document/commands/region_commands.h"
 #include "editor/document/qt_conversions.h"
+#include "editor/document/scene_document.h"
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/region_box_tool.h"
 #include "editor/regions/region_layers.h"
-#include "editor/document/scene_document.h"
 #include "editor/viewport/viewport.h"
 #include "support/editor_documents.h"
 #include "support/qt_test_registry.h"

@@ -71,7 +71,7 @@ private slots:
     {
         Camera camera;
         camera.setStandardView(StandardView::Front);
-        camera.pan(0.5, 0.0); // the scene follows the cursor to the right...
+        camera.pan(0.5, 0.0);             // the scene follows the cursor to the right...
         QVERIFY(camera.target().x < 0.0); // ...so the camera moves left
         QCOMPARE(camera.target().y, 0.0);
         QCOMPARE(camera.target().z, 0.0);

@@ -1,8 +1,8 @@
 // The viewport on a real OpenGL 3.3 context (Xvfb + Mesa): the screenshot
 // command, where a known red face lands, picking by mouse, and buffers that
 // follow the document's change signals.
-#include "editor/document/commands/material_commands.h"
 #include "editor/app/main_window.h"
+#include "editor/document/commands/material_commands.h"
 #include "editor/document/scene_document.h"
 #include "editor/viewport/scene_mesh.h"
 #include "editor/viewport/viewport.h"
@@ -12,11 +12,11 @@
 
 #include <QApplication>
 #include <QImage>
-#include <QWheelEvent>
 #include <QProcess>
 #include <QSet>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 
 #include <memory>
 
@@ -63,7 +63,7 @@ private slots:
         QTemporaryDir dir;
         const QString png = dir.filePath(QStringLiteral("cornell.png"));
         const test::EditorRun run = runEditor({test::sampleFile("cornell-box"), QStringLiteral("--screenshot"), png,
-                                         QStringLiteral("--size"), QStringLiteral("1200x800")});
+                                               QStringLiteral("--size"), QStringLiteral("1200x800")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.stderrText));
         QImage image(png);
         QVERIFY(!image.isNull());
@@ -94,8 +94,9 @@ private slots:
     void aSceneThatCannotBeOpenedFailsTheScreenshotWithExitCode2()
     {
         QTemporaryDir dir;
-        const test::EditorRun run = runEditor({dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--screenshot"),
-                                         dir.filePath(QStringLiteral("out.png"))});
+        const test::EditorRun run =
+            runEditor({dir.filePath(QStringLiteral("missing.json")), QStringLiteral("--screenshot"),
+                       dir.filePath(QStringLiteral("out.png"))});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.stderrText.contains(QStringLiteral("missing.json")));
         QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("out.png"))));
@@ -104,7 +105,7 @@ private slots:
     void anUnwritableScreenshotPathFailsWithExitCode2()
     {
         const test::EditorRun run = runEditor({test::sampleFile("cornell-box"), QStringLiteral("--screenshot"),
-                                         QStringLiteral("/proc/regio-cannot-write-here/out.png")});
+                                               QStringLiteral("/proc/regio-cannot-write-here/out.png")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(!run.stderrText.isEmpty());
     }
@@ -197,7 +198,10 @@ private slots:
             int presses = 0, releases = 0;
             bool deactivatedCalled = false;
             bool mousePress(Viewport&, QMouseEvent* e) override { return e->button() == Qt::LeftButton && ++presses; }
-            bool mouseRelease(Viewport&, QMouseEvent* e) override { return e->button() == Qt::LeftButton && ++releases; }
+            bool mouseRelease(Viewport&, QMouseEvent* e) override
+            {
+                return e->button() == Qt::LeftButton && ++releases;
+            }
             void deactivated() override { deactivatedCalled = true; }
         } tool;
         auto window = showWindow(test::sampleFile("cornell-box"));
@@ -256,7 +260,8 @@ private slots:
         viewport->setSnapEnabled(false);
         // The gizmo sits at the selection's centre; grab its y handle a bit
         // above the centre and drag upwards.
-        const model::Box3 box = boundsOfFaces(document->scene(), selectedFaceIds(document->scene(), document->selection()));
+        const model::Box3 box =
+            boundsOfFaces(document->scene(), selectedFaceIds(document->scene(), document->selection()));
         const auto centre = viewport->screenView().toPixels(box.center());
         QVERIFY(centre);
         const QPoint grab(int(centre->x), int(centre->y) - 40);
@@ -265,11 +270,12 @@ private slots:
             QTest::mouseMove(viewport, grab - QPoint(0, dy));
         QTest::mouseRelease(viewport, Qt::LeftButton, {}, grab - QPoint(0, 60));
         QCOMPARE(document->undoStack()->count(), 1);
-        const double lift = document->scene().findPart("short-block")->vertices[0].y -
-                            before.findPart("short-block")->vertices[0].y;
+        const double lift =
+            document->scene().findPart("short-block")->vertices[0].y - before.findPart("short-block")->vertices[0].y;
         QVERIFY2(lift > 0.01, qPrintable(QString::number(lift)));
         // Only upwards: x and z stay.
-        QCOMPARE(document->scene().findPart("short-block")->vertices[0].x, before.findPart("short-block")->vertices[0].x);
+        QCOMPARE(document->scene().findPart("short-block")->vertices[0].x,
+                 before.findPart("short-block")->vertices[0].x);
         document->undoStack()->undo();
         QVERIFY(document->scene() == before);
     }

@@ -32,9 +32,7 @@ TEST(EditMaterials, AMaterialWithATakenIdOrOutOfRangeValuesIsRefused)
     expectRefused(scene, [](Scene& s) { return addMaterial(s, {"red", "", {0.5, 0.5, 0.5}, {}}); });
     expectRefused(scene, [](Scene& s) { return addMaterial(s, {"crate", "", {0.5, 0.5, 0.5}, {}}); });
     expectRefused(scene, [](Scene& s) { return addMaterial(s, {"", "", {0.5, 0.5, 0.5}, {}}); });
-    auto bright = expectRefused(scene, [](Scene& s) {
-        return addMaterial(s, {"mirror", "", {0.5, 1.0, 0.5}, {}});
-    });
+    auto bright = expectRefused(scene, [](Scene& s) { return addMaterial(s, {"mirror", "", {0.5, 1.0, 0.5}, {}}); });
     EXPECT_EQ(bright.pointer, "/materials/3/reflectance");
     expectRefused(scene, [](Scene& s) { return addMaterial(s, {"m", "", {0.5, 0.5, 0.5}, {-1, 0, 0}}); });
     expectRefused(scene, [](Scene& s) { return addMaterial(s, {"m", "", {0.5, 0.5, 0.5}, {}}, 9); });

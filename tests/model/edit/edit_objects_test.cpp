@@ -200,8 +200,7 @@ TEST(EditObjects, GroupingObjectsGathersAllTheirParts)
     auto previous = groupObjects(scene, {"crate", "table"}, "table", "Furniture");
     ASSERT_TRUE(previous.ok()) << previous.error().message;
     EXPECT_EQ(objectIds(scene), (std::vector<std::string>{"table", "room"}));
-    EXPECT_EQ(partIds(scene.objects[0]),
-              (std::vector<std::string>{"crate.body", "table.desk", "table.legs"}));
+    EXPECT_EQ(partIds(scene.objects[0]), (std::vector<std::string>{"crate.body", "table.desk", "table.legs"}));
     ASSERT_TRUE(restoreObjectLayout(scene, *previous).ok());
     EXPECT_TRUE(scene == original);
 }
@@ -250,8 +249,7 @@ TEST(EditObjects, TransformingAnObjectMovesAllItsPartsAndUndoRestoresTheExactNum
 {
     const Scene original = sampleScene();
     Scene scene = original;
-    glm::dmat4 m = glm::rotate(glm::translate(glm::dmat4(1.0), Vec3{0.1, 0, 0.3}), 0.7,
-                               Vec3{0, 1, 0});
+    glm::dmat4 m = glm::rotate(glm::translate(glm::dmat4(1.0), Vec3{0.1, 0, 0.3}), 0.7, Vec3{0, 1, 0});
     auto previous = transformObject(scene, "table", m);
     ASSERT_TRUE(previous.ok());
     ASSERT_EQ(previous->size(), 2u);
@@ -259,8 +257,7 @@ TEST(EditObjects, TransformingAnObjectMovesAllItsPartsAndUndoRestoresTheExactNum
         EXPECT_TRUE(isClosedManifold(part));
         EXPECT_TRUE(facesArePlanarAndConvex(part));
     }
-    EXPECT_NEAR(signedVolume(scene.objects[0].parts[0]), signedVolume(original.objects[0].parts[0]),
-                1e-12);
+    EXPECT_NEAR(signedVolume(scene.objects[0].parts[0]), signedVolume(original.objects[0].parts[0]), 1e-12);
     ASSERT_TRUE(setPartGeometries(scene, *previous).ok());
     EXPECT_TRUE(scene == original);
     expectRefused(scene, [](Scene& s) { return transformObject(s, "chair", glm::dmat4(1.0)); });

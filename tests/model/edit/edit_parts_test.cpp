@@ -37,8 +37,7 @@ TEST(EditParts, AddingAPartAtAnIndexAndRemovingItRestoresTheScene)
     Part drawer = makeBox("table.drawer", {0.4, 0.6, 0.1}, {0.8, 0.7, 0.6}, "white").value();
     auto index = addPart(scene, "table", drawer, 1);
     ASSERT_TRUE(index.ok()) << index.error().message;
-    EXPECT_EQ(partIds(scene, "table"),
-              (std::vector<std::string>{"table.desk", "table.drawer", "table.legs"}));
+    EXPECT_EQ(partIds(scene, "table"), (std::vector<std::string>{"table.desk", "table.drawer", "table.legs"}));
     auto removed = removePart(scene, "table.drawer");
     ASSERT_TRUE(removed.ok());
     EXPECT_EQ(removed->objectId, "table");
@@ -80,8 +79,7 @@ TEST(EditParts, DuplicatingAPartPlacesAFreshCopyRightAfterIt)
     auto id = duplicatePart(scene, "table.legs");
     ASSERT_TRUE(id.ok());
     EXPECT_EQ(*id, "table.legs-2");
-    EXPECT_EQ(partIds(scene, "table"),
-              (std::vector<std::string>{"table.desk", "table.legs", "table.legs-2"}));
+    EXPECT_EQ(partIds(scene, "table"), (std::vector<std::string>{"table.desk", "table.legs", "table.legs-2"}));
     EXPECT_EQ(scene.findPart(*id)->faces[0].id, "table.legs-2.nx");
     ASSERT_TRUE(removePart(scene, *id).ok());
     EXPECT_TRUE(scene == original);
@@ -177,8 +175,7 @@ TEST(EditParts, TransformingAPartAndSettingTheOldGeometryBackRestoresTheExactNum
 {
     const Scene original = sampleScene();
     Scene scene = original;
-    glm::dmat4 m = glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), Vec3{0.3, 0.1, -0.2}),
-                                          0.3, Vec3{1, 2, 3}),
+    glm::dmat4 m = glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), Vec3{0.3, 0.1, -0.2}), 0.3, Vec3{1, 2, 3}),
                               Vec3{1.5, 0.5, 2.0});
     auto previous = transformPart(scene, "crate.body", m);
     ASSERT_TRUE(previous.ok());
@@ -217,9 +214,7 @@ TEST(EditParts, SingularProjectiveOrNonFiniteTransformsAreRefused)
     glm::dmat4 notFinite(1.0);
     notFinite[3][0] = NAN;
     expectRefused(scene, [&](Scene& s) { return transformPart(s, "crate.body", notFinite); });
-    expectRefused(scene, [](Scene& s) {
-        return transformParts(s, {"crate.body", "crate.body"}, glm::dmat4(1.0));
-    });
+    expectRefused(scene, [](Scene& s) { return transformParts(s, {"crate.body", "crate.body"}, glm::dmat4(1.0)); });
     // Millimetre-scale parts are fine: the singularity test is relative.
     Scene copy = scene;
     EXPECT_TRUE(transformPart(copy, "crate.body", glm::scale(glm::dmat4(1.0), Vec3{1e-3})).ok());
@@ -247,11 +242,9 @@ TEST(EditParts, SplittingAPartInTheSceneReplacesItByBothHalvesAndTheirFacesInThe
     Plane plane = Plane::fromPointNormal({0.6, 0, 0}, {1, 0, 0});
     auto split = splitPartInScene(scene, "table.desk", plane, "table.right", "table.left");
     ASSERT_TRUE(split.ok()) << split.error().message;
-    EXPECT_EQ(partIds(scene, "table"),
-              (std::vector<std::string>{"table.right", "table.left", "table.legs"}));
+    EXPECT_EQ(partIds(scene, "table"), (std::vector<std::string>{"table.right", "table.left", "table.legs"}));
     EXPECT_EQ(order(scene, "west"),
-              (std::vector<std::string>{"table.right.py", "table.left.py", "table.legs.px",
-                                        "room.shell.nx"}));
+              (std::vector<std::string>{"table.right.py", "table.left.py", "table.legs.px", "room.shell.nx"}));
     for (const char* id : {"table.right", "table.left"}) {
         const Part& half = *scene.findPart(id);
         EXPECT_TRUE(isClosedManifold(half));
@@ -282,15 +275,11 @@ TEST(EditParts, ASplitIsRefusedForTakenIdsOrAPlaneMissingThePart)
 {
     Scene scene = sampleScene();
     Plane plane = Plane::fromPointNormal({0.6, 0, 0}, {1, 0, 0});
-    expectRefused(scene, [&](Scene& s) {
-        return splitPartInScene(s, "table.desk", plane, "crate.body", "table.left");
-    });
-    expectRefused(scene, [&](Scene& s) {
-        return splitPartInScene(s, "table.desk", plane, "table.right", "table.legs");
-    });
-    auto missing = expectRefused(scene, [&](Scene& s) {
-        return splitPartInScene(s, "crate.body", plane, "a", "b");
-    });
+    expectRefused(scene,
+                  [&](Scene& s) { return splitPartInScene(s, "table.desk", plane, "crate.body", "table.left"); });
+    expectRefused(scene,
+                  [&](Scene& s) { return splitPartInScene(s, "table.desk", plane, "table.right", "table.legs"); });
+    auto missing = expectRefused(scene, [&](Scene& s) { return splitPartInScene(s, "crate.body", plane, "a", "b"); });
     EXPECT_NE(missing.message.find("misses"), std::string::npos);
     expectRefused(scene, [&](Scene& s) { return splitPartInScene(s, "chair", plane, "a", "b"); });
 }
@@ -314,9 +303,7 @@ TEST(EditParts, AScenePassesValidationAfterCuttingAPartAndClippingTheRoomToTheRe
     // The room straddles the regions' boundary at x = 1.5; clipping it there
     // without caps keeps it a room (no new wall) and ends the warning.
     Plane boundary = Plane::fromPointNormal({1.5, 0, 0}, {1, 0, 0});
-    ASSERT_TRUE(splitPartInScene(scene, "room.shell", boundary, "room.east", "room.west",
-                                 CutCaps::Open)
-                    .ok());
+    ASSERT_TRUE(splitPartInScene(scene, "room.shell", boundary, "room.east", "room.west", CutCaps::Open).ok());
     Diagnostics diagnostics = validateScene(scene);
     EXPECT_FALSE(hasErrors(diagnostics));
     for (const Diagnostic& d : diagnostics)

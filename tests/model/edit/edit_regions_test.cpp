@@ -13,10 +13,7 @@ namespace {
 
 using Order = std::vector<std::string>;
 
-const Order& order(const Scene& scene, const std::string& regionId)
-{
-    return scene.findRegion(regionId)->bspOrder;
-}
+const Order& order(const Scene& scene, const std::string& regionId) { return scene.findRegion(regionId)->bspOrder; }
 
 } // namespace
 
@@ -39,7 +36,11 @@ TEST(EditRegions, ARegionNeedsAFreshIdAPositiveBoxAndAnOrderOfKnownDistinctFaces
 {
     Scene scene = sampleScene();
     Region good{"north", "", {-1, 0, 3}, {4, 3, 5}, {}};
-    auto withId = [&](std::string id) { Region r = good; r.id = id; return r; };
+    auto withId = [&](std::string id) {
+        Region r = good;
+        r.id = id;
+        return r;
+    };
     expectRefused(scene, [&](Scene& s) { return addRegion(s, withId("west")); });
     expectRefused(scene, [&](Scene& s) { return addRegion(s, withId("table")); });
     expectRefused(scene, [&](Scene& s) { return addRegion(s, withId("")); });
@@ -97,9 +98,7 @@ TEST(EditRegions, SettingAWholeBspOrderReturnsThePreviousOrder)
     ASSERT_TRUE(setBspOrder(scene, "east", *previous).ok());
     EXPECT_TRUE(scene == original);
     expectRefused(scene, [](Scene& s) { return setBspOrder(s, "east", {"a.b"}); });
-    expectRefused(scene, [](Scene& s) {
-        return setBspOrder(s, "east", {"crate.body.py", "crate.body.py"});
-    });
+    expectRefused(scene, [](Scene& s) { return setBspOrder(s, "east", {"crate.body.py", "crate.body.py"}); });
 }
 
 TEST(EditRegions, InsertingAnEntryAndRemovingItAtItsIndexRestoresTheOrder)
@@ -109,8 +108,7 @@ TEST(EditRegions, InsertingAnEntryAndRemovingItAtItsIndexRestoresTheOrder)
     auto index = insertBspEntry(scene, "west", "table.legs.py", 1);
     ASSERT_TRUE(index.ok());
     EXPECT_EQ(*index, 1);
-    EXPECT_EQ(order(scene, "west"),
-              (Order{"table.desk.py", "table.legs.py", "table.legs.px", "room.shell.nx"}));
+    EXPECT_EQ(order(scene, "west"), (Order{"table.desk.py", "table.legs.py", "table.legs.px", "room.shell.nx"}));
     auto removed = removeBspEntry(scene, "west", 1);
     ASSERT_TRUE(removed.ok());
     EXPECT_EQ(*removed, (BspEntry{"table.legs.py", 1}));
@@ -153,8 +151,7 @@ TEST(EditRegions, RemovedFacesLeaveEveryOrderAndTheSnapshotsPutThemBack)
 {
     const Scene original = sampleScene();
     Scene scene = original;
-    BspOrderSnapshots snapshots =
-        removeFacesFromBspOrders(scene, {"table.desk.py", "crate.body.nx", "room.shell.py"});
+    BspOrderSnapshots snapshots = removeFacesFromBspOrders(scene, {"table.desk.py", "crate.body.nx", "room.shell.py"});
     EXPECT_EQ(order(scene, "west"), (Order{"table.legs.px", "room.shell.nx"}));
     EXPECT_TRUE(order(scene, "east").empty());
     ASSERT_EQ(snapshots.size(), 2u);

@@ -25,7 +25,10 @@ namespace {
 
 class RandomEdits {
 public:
-    explicit RandomEdits(std::uint32_t seed) : m_random(seed) {}
+    explicit RandomEdits(std::uint32_t seed)
+        : m_random(seed)
+    {
+    }
 
     // Applies one random edit; returns its inverse, or nothing when refused.
     std::function<void(Scene&)> step(Scene& scene)
@@ -47,8 +50,7 @@ public:
             for (const Vec3& v : p->vertices)
                 centre += v / double(p->vertices.size());
             Plane plane = Plane::fromPointNormal(centre, {real(-1, 1), real(-1, 1), real(0.1, 1)});
-            return undoWith(splitPartInScene(scene, part, plane, scene.uniqueId(part + "a"),
-                                             scene.uniqueId(part + "b"),
+            return undoWith(splitPartInScene(scene, part, plane, scene.uniqueId(part + "a"), scene.uniqueId(part + "b"),
                                              pick(2) ? CutCaps::Close : CutCaps::Open),
                             [](Scene& s, const PartSplit& r) { return unsplitPart(s, r); });
         }
@@ -61,8 +63,7 @@ public:
             return undoWith(removeObject(scene, randomObject(scene)),
                             [](Scene& s, const RemovedObject& r) { return restoreObject(s, r); });
         case 4:
-            return undoWith(groupParts(scene, {randomPart(scene), randomPart(scene)},
-                                       scene.uniqueId("group")),
+            return undoWith(groupParts(scene, {randomPart(scene), randomPart(scene)}, scene.uniqueId("group")),
                             [](Scene& s, const ObjectLayout& l) { return restoreObjectLayout(s, l); });
         case 5:
             return undoWith(ungroupObject(scene, randomObject(scene)),
@@ -70,17 +71,15 @@ public:
         case 6: {
             std::string part = randomPart(scene);
             const Object& target = scene.objects[size_t(pick(int(scene.objects.size())))];
-            return undoWith(movePart(scene, part, target.id, pick(int(target.parts.size()) + 1) - 1),
-                            [part](Scene& s, const PartPlace& from) {
-                                return movePart(s, part, from.objectId, from.index);
-                            });
+            return undoWith(
+                movePart(scene, part, target.id, pick(int(target.parts.size()) + 1) - 1),
+                [part](Scene& s, const PartPlace& from) { return movePart(s, part, from.objectId, from.index); });
         }
         case 7: {
             std::string face = randomFace(scene);
             std::string newId = pick(8) == 0 ? "crate" : scene.uniqueId(face + "x");
-            return undoWith(renameFace(scene, face, newId), [face, newId](Scene& s, const Unit&) {
-                return renameFace(s, newId, face);
-            });
+            return undoWith(renameFace(scene, face, newId),
+                            [face, newId](Scene& s, const Unit&) { return renameFace(s, newId, face); });
         }
         case 8: {
             std::string face = randomFace(scene);
@@ -96,16 +95,14 @@ public:
                 return undoWith(insertBspEntry(scene, region, randomFace(scene), pick(size + 1)),
                                 [region](Scene& s, int index) { return removeBspEntry(s, region, index); });
             case 1:
-                return undoWith(removeBspEntry(scene, region, pick(size + 1) - 1),
-                                [region](Scene& s, const BspEntry& e) {
-                                    return insertBspEntry(s, region, e.faceId, e.index);
-                                });
+                return undoWith(
+                    removeBspEntry(scene, region, pick(size + 1) - 1),
+                    [region](Scene& s, const BspEntry& e) { return insertBspEntry(s, region, e.faceId, e.index); });
             default: {
                 int from = pick(size + 1) - 1, to = pick(size + 1) - 1;
-                return undoWith(moveBspEntry(scene, region, from, to),
-                                [region, from, to](Scene& s, const Unit&) {
-                                    return moveBspEntry(s, region, to, from);
-                                });
+                return undoWith(moveBspEntry(scene, region, from, to), [region, from, to](Scene& s, const Unit&) {
+                    return moveBspEntry(s, region, to, from);
+                });
             }
             }
         }
@@ -114,34 +111,29 @@ public:
             Vec3 min{real(-2, 2), real(-2, 2), real(-2, 2)};
             Vec3 max = min + Vec3{real(-0.5, 3), real(-0.5, 3), real(-0.5, 3)};
             return undoWith(setRegionBox(scene, region, min, max),
-                            [region](Scene& s, const RegionBox& b) {
-                                return setRegionBox(s, region, b.min, b.max);
-                            });
+                            [region](Scene& s, const RegionBox& b) { return setRegionBox(s, region, b.min, b.max); });
         }
         case 11: {
             if (pick(2) == 0)
                 return undoWith(addMaterial(scene, {scene.uniqueId("paint"), "", {real(0, 1), 0.5, 0.5}, {}},
-                                                pick(int(scene.materials.size()) + 2) - 1),
+                                            pick(int(scene.materials.size()) + 2) - 1),
                                 [id = scene.uniqueId("paint")](Scene& s, int) { return removeMaterial(s, id); });
             const Material& m = scene.materials[size_t(pick(int(scene.materials.size())))];
-            return undoWith(removeMaterial(scene, m.id), [](Scene& s, const RemovedMaterial& r) {
-                return addMaterial(s, r.material, r.index);
-            });
+            return undoWith(removeMaterial(scene, m.id),
+                            [](Scene& s, const RemovedMaterial& r) { return addMaterial(s, r.material, r.index); });
         }
         case 12: {
             std::string id = scene.materials[size_t(pick(int(scene.materials.size())))].id;
             std::string newId = scene.uniqueId(id + "x");
-            return undoWith(renameMaterial(scene, id, newId), [id, newId](Scene& s, const Unit&) {
-                return renameMaterial(s, newId, id);
-            });
+            return undoWith(renameMaterial(scene, id, newId),
+                            [id, newId](Scene& s, const Unit&) { return renameMaterial(s, newId, id); });
         }
         default: {
             if (pick(2) == 0) {
                 std::string id = randomObject(scene);
                 std::string newId = scene.uniqueId(id + "x");
-                return undoWith(renameObject(scene, id, newId), [id, newId](Scene& s, const Unit&) {
-                    return renameObject(s, newId, id);
-                });
+                return undoWith(renameObject(scene, id, newId),
+                                [id, newId](Scene& s, const Unit&) { return renameObject(s, newId, id); });
             }
             return undoWith(removePart(scene, randomPart(scene)),
                             [](Scene& s, const RemovedPart& r) { return restorePart(s, r); });
@@ -170,10 +162,7 @@ private:
     int pick(int n) { return int(m_random() % std::uint32_t(n)); }
     double real(double lo, double hi) { return lo + (hi - lo) * (double(m_random()) / 4294967296.0); }
 
-    std::string randomObject(const Scene& scene)
-    {
-        return scene.objects[size_t(pick(int(scene.objects.size())))].id;
-    }
+    std::string randomObject(const Scene& scene) { return scene.objects[size_t(pick(int(scene.objects.size())))].id; }
     std::string randomPart(const Scene& scene)
     {
         std::vector<std::string> ids;

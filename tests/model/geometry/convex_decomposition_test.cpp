@@ -16,8 +16,7 @@ double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
 // Every piece convex and counter-clockwise; every rim edge on exactly one
 // piece, in its direction; every other piece edge matched by the reverse
 // edge of another piece (a diagonal); the areas add up to the polygon's.
-void expectExactConvexCover(const std::vector<V2>& p, const Polygon2Loop& outer,
-                            const std::vector<Polygon2Loop>& holes,
+void expectExactConvexCover(const std::vector<V2>& p, const Polygon2Loop& outer, const std::vector<Polygon2Loop>& holes,
                             const std::vector<Polygon2Loop>& pieces)
 {
     std::map<std::pair<int, int>, int> uses;
@@ -69,8 +68,7 @@ TEST(ConvexDecomposition, AConvexPolygonComesBackAsItIs)
 TEST(ConvexDecomposition, ACombIsSplitIntoFewConvexPiecesWithTheTeethIntact)
 {
     // Three teeth on a bar: a "E" turned on its back.
-    std::vector<V2> p{{0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}, {3, 1},
-                      {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+    std::vector<V2> p{{0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}, {3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
     Polygon2Loop outer{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
     auto pieces = convexDecomposition(p, outer, {}, 1e-9);
     ASSERT_TRUE(pieces.ok()) << pieces.error().message;
@@ -82,9 +80,9 @@ TEST(ConvexDecomposition, ACombIsSplitIntoFewConvexPiecesWithTheTeethIntact)
 
 TEST(ConvexDecomposition, HolesAreBridgedAndCoveredAround)
 {
-    std::vector<V2> p{{0, 0}, {6, 0}, {6, 3}, {0, 3},       // outer
-                      {1, 1}, {1, 2}, {2, 2}, {2, 1},       // first hole (clockwise)
-                      {4, 1}, {4, 2}, {5, 2}, {5, 1}};      // second hole
+    std::vector<V2> p{{0, 0}, {6, 0}, {6, 3}, {0, 3},  // outer
+                      {1, 1}, {1, 2}, {2, 2}, {2, 1},  // first hole (clockwise)
+                      {4, 1}, {4, 2}, {5, 2}, {5, 1}}; // second hole
     Polygon2Loop outer{0, 1, 2, 3};
     std::vector<Polygon2Loop> holes{{4, 5, 6, 7}, {8, 9, 10, 11}};
     auto pieces = convexDecomposition(p, outer, holes, 1e-9);

@@ -16,18 +16,14 @@ using namespace regio::test;
 
 namespace {
 
-Part unitCube(const std::string& id = "slab")
-{
-    return makeBox(id, {0, 0, 0}, {1, 1, 1}, "wood").value();
-}
+Part unitCube(const std::string& id = "slab") { return makeBox(id, {0, 0, 0}, {1, 1, 1}, "wood").value(); }
 
 // A prism over a 2-D outline in the x-y plane, from z = 0 to z = depth.
 // `pieces` are the convex pieces of the outline (counter-clockwise), `rims`
 // its boundary loops (outer counter-clockwise, holes clockwise); both index
 // `points`, and every point on a rim must be on the pieces' edges where they
 // meet it, so the part has no T-junctions.
-Part extrude(const std::string& id, const std::vector<glm::dvec2>& points,
-             const std::vector<std::vector<int>>& pieces,
+Part extrude(const std::string& id, const std::vector<glm::dvec2>& points, const std::vector<std::vector<int>>& pieces,
              const std::vector<std::vector<int>>& rims, double depth)
 {
     Part part;
@@ -159,8 +155,7 @@ TEST(PlaneCut, AnObliqueCutThroughTheCentreGivesAHexagonalCap)
     const Face* cap = findFace(cut->front, cut->frontCaps[0]);
     EXPECT_EQ(cap->loop.size(), 6u);
     // A regular hexagon of side sqrt(2)/2: 3 sqrt(3) / 2 * 1/2.
-    EXPECT_NEAR(polygonArea(loopPositions(cut->front.vertices, cap->loop)),
-                0.75 * std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(polygonArea(loopPositions(cut->front.vertices, cap->loop)), 0.75 * std::sqrt(3.0), 1e-12);
     expectCapsFace(cut->back, cut->backCaps, glm::normalize(Vec3{1, 1, 1}));
 }
 
@@ -348,9 +343,7 @@ TEST(PlaneCut, AFaceLyingInTheCutPlaneStaysWithTheSolidBehindIt)
     expectSoundHalves(*cut, 3.0);
     EXPECT_NEAR(signedVolume(cut->back), 2.0, 1e-12);
     ASSERT_EQ(cut->backCaps.size(), 1u);
-    EXPECT_NEAR(polygonArea(loopPositions(cut->back.vertices,
-                                          findFace(cut->back, "foot.cut")->loop)),
-                1.0, 1e-12);
+    EXPECT_NEAR(polygonArea(loopPositions(cut->back.vertices, findFace(cut->back, "foot.cut")->loop)), 1.0, 1e-12);
     EXPECT_NE(findFace(cut->back, "foot.side3"), nullptr) << "the foot's top, x in [1, 2]";
 }
 

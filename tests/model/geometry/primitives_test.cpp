@@ -30,7 +30,7 @@ TEST(Primitives, ABoxIsClosedWithSixOutwardFacesNamedByTheirSide)
     expectSound(*box, 2.0 * 1.0 * 3.0);
     EXPECT_EQ(box->material, "white");
     const std::pair<const char*, Vec3> expected[] = {
-        {"box1.body.nx", {-1, 0, 0}}, {"box1.body.px", {1, 0, 0}}, {"box1.body.ny", {0, -1, 0}},
+        {"box1.body.nx", {-1, 0, 0}}, {"box1.body.px", {1, 0, 0}},  {"box1.body.ny", {0, -1, 0}},
         {"box1.body.py", {0, 1, 0}},  {"box1.body.nz", {0, 0, -1}}, {"box1.body.pz", {0, 0, 1}},
     };
     for (const auto& [id, normal] : expected) {

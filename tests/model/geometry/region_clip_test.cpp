@@ -5,8 +5,8 @@
 
 #include "model/edit/edit_regions.h"
 #include "model/geometry/primitives.h"
-#include "model/validation/validation.h"
 #include "model/geometry/winged_edge.h"
+#include "model/validation/validation.h"
 #include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
@@ -127,8 +127,8 @@ TEST(RegionClip, KeepsEachOrderNamingOnlyThePiecesInsideItsRegion)
 {
     Scene scene = twoRegions();
     ASSERT_TRUE(insertBspEntry(scene, "left", "crate.body.py"));
-    ASSERT_TRUE(insertBspEntry(scene, "left", "slab.body.py"));   // cut in two by x = 2
-    ASSERT_TRUE(insertBspEntry(scene, "right", "slab.body.px"));  // wholly in "right"
+    ASSERT_TRUE(insertBspEntry(scene, "left", "slab.body.py"));  // cut in two by x = 2
+    ASSERT_TRUE(insertBspEntry(scene, "right", "slab.body.px")); // wholly in "right"
     auto clip = clipPartToRegions(scene, "slab.body");
     ASSERT_TRUE(clip);
     EXPECT_EQ(scene.findRegion("left")->bspOrder, (std::vector<std::string>{"crate.body.py", "slab.body-left.py"}));
@@ -154,8 +154,7 @@ TEST(RegionClip, LeavesOpenPartsOpenAndCutsThemAtEveryBoundary)
 
     auto clip = clipPartToRegions(scene, "room.floor");
     ASSERT_TRUE(clip);
-    EXPECT_EQ(clip->pieces,
-              (std::vector<std::string>{"room.floor-west", "room.floor-middle", "room.floor-east"}));
+    EXPECT_EQ(clip->pieces, (std::vector<std::string>{"room.floor-west", "room.floor-middle", "room.floor-east"}));
     EXPECT_TRUE(clip->capFaces.empty());
     for (const std::string& id : clip->pieces)
         EXPECT_EQ(scene.findPart(id)->faces.size(), 1u) << id;
@@ -214,8 +213,7 @@ TEST(RegionClip, PutsWhatLiesOutsideEveryRegionInAnOutsidePiece)
     const double area = surfaceArea(scene, {"slab.body"});
     auto clip = clipPartToRegions(scene, "slab.body");
     ASSERT_TRUE(clip);
-    EXPECT_EQ(clip->pieces,
-              (std::vector<std::string>{"slab.body-left", "slab.body-right", "slab.body-outside"}));
+    EXPECT_EQ(clip->pieces, (std::vector<std::string>{"slab.body-left", "slab.body-right", "slab.body-outside"}));
     EXPECT_NEAR(surfaceArea(scene, clip->pieces, clip->capFaces), area, 1e-12);
     const std::vector<Diagnostic> warnings = straddleWarnings(scene);
     EXPECT_FALSE(warnedAbout(warnings, "slab.body-left"));
@@ -239,8 +237,7 @@ TEST(RegionClip, CutsAwayWhatLiesOutsideAllRegionsBeforeCuttingBetweenThem)
     const Scene before = scene;
     auto clip = clipPartToRegions(scene, "slab.body");
     ASSERT_TRUE(clip);
-    EXPECT_EQ(clip->pieces,
-              (std::vector<std::string>{"slab.body-left", "slab.body-right", "slab.body-outside"}));
+    EXPECT_EQ(clip->pieces, (std::vector<std::string>{"slab.body-left", "slab.body-right", "slab.body-outside"}));
     EXPECT_EQ(clip->splits.size(), 2u);
     EXPECT_TRUE(insideBox(*scene.findPart("slab.body-left"), scene.regions[0]));
     EXPECT_TRUE(insideBox(*scene.findPart("slab.body-right"), scene.regions[1]));

@@ -30,8 +30,7 @@ Part makePart(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops)
 // Unit cube, every face counter-clockwise seen from outside.
 Part cube()
 {
-    return makePart({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+    return makePart({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
                     {{0, 3, 2, 1},   // bottom, -z
                      {4, 5, 6, 7},   // top, +z
                      {0, 1, 5, 4},   // front, -y
@@ -218,9 +217,8 @@ TEST(WingedEdge, HexagonalPrismHasEighteenEdgesAndSixSidedCaps)
 {
     Part part = hexagonalPrism();
     for (int f = 0; f < 8; ++f) // the fixture itself is wound outwards
-        EXPECT_GT(glm::dot(faceNormal(part, f), polygonCentroid(loopPositions(
-                                                        part.vertices, part.faces[size_t(f)].loop)) -
-                                                    Vec3(0, 0, 0.5)),
+        EXPECT_GT(glm::dot(faceNormal(part, f),
+                           polygonCentroid(loopPositions(part.vertices, part.faces[size_t(f)].loop)) - Vec3(0, 0, 0.5)),
                   0.0);
     WingedEdgeMesh mesh = WingedEdgeMesh::build(part);
     EXPECT_EQ(mesh.edgeCount(), 18);
@@ -295,8 +293,7 @@ TEST(WingedEdge, MisWoundCubeFaceBreaksTheWindingAndIsTheFaceToFlip)
 TEST(WingedEdge, ThreeFacesOnOneEdgeAreNonManifold)
 {
     // Two squares in the z = 0 plane and a fin standing on their shared edge.
-    Part part = makePart({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, 1, 0},
-                          {0, 0, 1}, {0, 1, 1}},
+    Part part = makePart({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, 1, 0}, {0, 0, 1}, {0, 1, 1}},
                          {{0, 2, 3, 1}, {0, 1, 5, 4}, {0, 6, 7, 1}});
     WingedEdgeMesh mesh = WingedEdgeMesh::build(part);
     int e = mesh.findEdge(0, 1);
@@ -345,8 +342,7 @@ TEST(WingedEdge, TwoCubesTouchingAtACornerMakeANonManifoldVertex)
 
 TEST(WingedEdge, BadLoopsAreReportedAndLeftOutOfTheTopology)
 {
-    Part part = makePart({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
-                         {{0, 1}, {0, 1, 7}, {0, 1, 2, 1}, {0, 1, 2, 3}});
+    Part part = makePart({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1}, {0, 1, 7}, {0, 1, 2, 1}, {0, 1, 2, 3}});
     WingedEdgeMesh mesh = WingedEdgeMesh::build(part);
     ASSERT_EQ(mesh.problems().size(), 3u);
     EXPECT_EQ(mesh.problems()[0].kind, TopologyProblem::Kind::LoopTooShort);

@@ -108,7 +108,7 @@ TEST(WriteFileAtomically, ANewFileGetsTheUsualPermissions)
     const Check written = writeFileAtomically(path, "png");
     ::umask(previous);
     ASSERT_TRUE(written.ok());
-    struct stat info {};
+    struct stat info { };
     ASSERT_EQ(::stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 07777, 0644u);
 }

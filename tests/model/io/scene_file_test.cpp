@@ -115,8 +115,7 @@ TEST(SceneFileLoad, ADirectoryIsRefused)
 
 TEST(SceneFileLoad, SyntaxErrorsKeepTheirPositionAndNoPathPrefix)
 {
-    const Result<Scene> read =
-        loadSceneFile(std::string(REGIO_TEST_DATA) + "/broken/malformed-json.json");
+    const Result<Scene> read = loadSceneFile(std::string(REGIO_TEST_DATA) + "/broken/malformed-json.json");
     ASSERT_EQ(read.diagnostics().size(), 1u);
     EXPECT_EQ(read.diagnostics()[0].line, 6);
     EXPECT_EQ(read.diagnostics()[0].column, 21);
@@ -167,7 +166,7 @@ TEST(SceneFileSave, KeepsThePermissionsOfTheFileItReplaces)
     std::ofstream(path) << kOldText;
     ::chmod(path.c_str(), 0640);
     ASSERT_TRUE(saveSceneFile(sampleScene(), path.string()));
-    struct stat info {};
+    struct stat info { };
     ASSERT_EQ(::stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 07777, 0640u);
 }
@@ -180,7 +179,7 @@ TEST(SceneFileSave, ANewFileGetsTheUsualPermissionsNotThoseOfATemporaryFile)
     const auto error = saveSceneFile(sampleScene(), path.string());
     ::umask(previous);
     ASSERT_TRUE(error.ok()) << error.error().message;
-    struct stat info {};
+    struct stat info { };
     ASSERT_EQ(::stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 07777, 0644u);
 }
@@ -258,9 +257,7 @@ TEST(SceneFileSave, AnUnwritableDirectoryLeavesTheOldFileIntact)
     ASSERT_NE(WEXITSTATUS(status), 3) << "could not drop root privileges";
     EXPECT_EQ(WEXITSTATUS(status), 0) << "the save into a read-only directory succeeded";
     EXPECT_NE(message.find("cannot save " + path.string()), std::string::npos) << message;
-    EXPECT_NE(message.find("cannot create a temporary file in " + dir.path().string()),
-              std::string::npos)
-        << message;
+    EXPECT_NE(message.find("cannot create a temporary file in " + dir.path().string()), std::string::npos) << message;
     EXPECT_NE(message.find("Permission denied"), std::string::npos) << message;
     EXPECT_EQ(readText(path), kOldText);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.json"});
@@ -273,7 +270,7 @@ TEST(SceneFileSave, AWriteThatFailsHalfwayLeavesTheOldFileAndNoTemporaryFile)
     ScratchDir dir;
     const fs::path path = dir / "scene.json";
     std::ofstream(path) << kOldText;
-    rlimit previous {};
+    rlimit previous{};
     ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &previous), 0);
     const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
     rlimit small = previous;
@@ -283,8 +280,7 @@ TEST(SceneFileSave, AWriteThatFailsHalfwayLeavesTheOldFileAndNoTemporaryFile)
     ::setrlimit(RLIMIT_FSIZE, &previous);
     std::signal(SIGXFSZ, previousHandler);
     ASSERT_FALSE(error.ok());
-    EXPECT_NE(error.error().message.find("cannot save " + path.string() + ": cannot write "),
-              std::string::npos)
+    EXPECT_NE(error.error().message.find("cannot save " + path.string() + ": cannot write "), std::string::npos)
         << error.error().message;
     EXPECT_NE(error.error().message.find("File too large"), std::string::npos) << error.error().message;
     EXPECT_EQ(readText(path), kOldText);

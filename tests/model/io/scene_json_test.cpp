@@ -31,10 +31,7 @@ std::string readText(const fs::path& path)
     return buffer.str();
 }
 
-std::string validPath(const std::string& name)
-{
-    return std::string(REGIO_TEST_DATA) + "/valid/" + name;
-}
+std::string validPath(const std::string& name) { return std::string(REGIO_TEST_DATA) + "/valid/" + name; }
 
 std::vector<fs::path> jsonFilesIn(const fs::path& dir)
 {
@@ -53,10 +50,7 @@ std::string hugeNumberScene()
 }
 
 // A string that opens and never closes, 64 MiB on.
-std::string unterminatedHugeString()
-{
-    return "{\n  \"format\": \"" + std::string(64u << 20, 'a');
-}
+std::string unterminatedHugeString() { return "{\n  \"format\": \"" + std::string(64u << 20, 'a'); }
 
 double secondsToParse(const std::string& text)
 {
@@ -69,8 +63,8 @@ std::string describe(const Diagnostics& diagnostics)
 {
     std::string out;
     for (const Diagnostic& d : diagnostics)
-        out += (d.isError() ? "error " : "warning ") + std::to_string(d.line) + ":" +
-               std::to_string(d.column) + " " + d.pointer + ": " + d.message + "\n";
+        out += (d.isError() ? "error " : "warning ") + std::to_string(d.line) + ":" + std::to_string(d.column) + " " +
+               d.pointer + ": " + d.message + "\n";
     return out;
 }
 
@@ -145,8 +139,7 @@ TEST(SceneJsonRead, EveryFieldOfTheFormatIsRead)
     EXPECT_EQ(scene.regions[0].name, "Whole room");
     EXPECT_EQ(scene.regions[0].min, Vec3(-1.0, -0.5, -1.0));
     EXPECT_EQ(scene.regions[0].max, Vec3(3.0, 3.0, 3.0));
-    EXPECT_EQ(scene.regions[0].bspOrder,
-              (std::vector<std::string>{"floor.top", "box.top", "light.emitter"}));
+    EXPECT_EQ(scene.regions[0].bspOrder, (std::vector<std::string>{"floor.top", "box.top", "light.emitter"}));
 
     EXPECT_EQ(scene.solver.hemicube, 300);
     EXPECT_EQ(scene.solver.patchSize, 0.25);
@@ -177,8 +170,7 @@ TEST(SceneJsonRead, KeyOrderAndLayoutDoNotMatter)
 
 TEST(SceneJsonRead, MissingOptionalKeysTakeTheirDefaults)
 {
-    const Result<Scene> read = parseScene(sceneWith("", "[0, 1, 2, 3]",
-                                                      R"(, "solver": { "hemicube": 64 })"));
+    const Result<Scene> read = parseScene(sceneWith("", "[0, 1, 2, 3]", R"(, "solver": { "hemicube": 64 })"));
     ASSERT_TRUE(read.ok()) << describe(read.diagnostics());
     EXPECT_EQ(read->materials[0].emission, Rgb(0.0));
     EXPECT_EQ(read->materials[0].name, "");
@@ -197,8 +189,7 @@ TEST(SceneJsonRead, AnIntegerWrittenWithAZeroFractionCountsAsAnInteger)
 
 TEST(SceneJsonRead, UnknownKeysAreWarningsAndTheSceneStillLoads)
 {
-    const Result<Scene> read =
-        parseScene(sceneWith(R"(, "gloss": 0.3)", "[0, 1, 2, 3]", R"(, "lights": [])"));
+    const Result<Scene> read = parseScene(sceneWith(R"(, "gloss": 0.3)", "[0, 1, 2, 3]", R"(, "lights": [])"));
     ASSERT_TRUE(read.ok()) << describe(read.diagnostics());
     ASSERT_EQ(read.diagnostics().size(), 2u) << describe(read.diagnostics());
     const Diagnostic* gloss = findAt(read.diagnostics(), "/materials/0/gloss");
@@ -220,9 +211,8 @@ TEST(SceneJsonRead, PointersEscapeSlashAndTildeInKeys)
 
 TEST(SceneJsonRead, AllProblemsOfAFileAreReportedInOnePass)
 {
-    const Result<Scene> read = parseScene(
-        sceneWith(R"(, "emission": [-1, 0, 0], "name": 3)", "[0, 1, 2, 9]",
-                  R"(, "solver": { "hemicube": 3, "patchSize": -1 })"));
+    const Result<Scene> read = parseScene(sceneWith(R"(, "emission": [-1, 0, 0], "name": 3)", "[0, 1, 2, 9]",
+                                                    R"(, "solver": { "hemicube": 3, "patchSize": -1 })"));
     EXPECT_FALSE(read.ok());
     EXPECT_NE(findAt(read.diagnostics(), "/materials/0/emission/0"), nullptr);
     EXPECT_NE(findAt(read.diagnostics(), "/materials/0/name"), nullptr);
@@ -236,8 +226,7 @@ TEST(SceneJsonRead, DiagnosticsNameTheIdsOfTheEnclosingElements)
 {
     const Result<Scene> read = parseScene(sceneWith("", "[0, 1, 2, 9]"));
     ASSERT_EQ(read.diagnostics().size(), 1u) << describe(read.diagnostics());
-    EXPECT_EQ(read.diagnostics()[0].idPath,
-              (std::vector<std::string>{"floor", "floor.slab", "floor.top"}));
+    EXPECT_EQ(read.diagnostics()[0].idPath, (std::vector<std::string>{"floor", "floor.slab", "floor.top"}));
 }
 
 TEST(SceneJsonRead, ANewerVersionIsRefusedWithAClearMessage)
@@ -252,11 +241,9 @@ TEST(SceneJsonRead, ANewerVersionIsRefusedWithAClearMessage)
 
 TEST(SceneJsonRead, AVersionBeyondAnyIntegerTypeIsStillNewer)
 {
-    const Result<Scene> read =
-        parseScene(R"({"format": "regio-scene", "version": 100000000000000000000000})");
+    const Result<Scene> read = parseScene(R"({"format": "regio-scene", "version": 100000000000000000000000})");
     ASSERT_EQ(read.diagnostics().size(), 1u);
-    EXPECT_NE(read.diagnostics()[0].message.find("is newer than this Regio supports"),
-              std::string::npos)
+    EXPECT_NE(read.diagnostics()[0].message.find("is newer than this Regio supports"), std::string::npos)
         << read.diagnostics()[0].message;
 }
 
@@ -269,7 +256,7 @@ TEST(SceneJsonRead, AFileOfAnotherFormatIsNotReadFurther)
 
 // ------------------------------------------------------ the broken files
 
-class BrokenFileTest : public testing::TestWithParam<regio::test::BrokenFile> {};
+class BrokenFileTest : public testing::TestWithParam<regio::test::BrokenFile> { };
 
 TEST_P(BrokenFileTest, IsRejectedWhereTheTableSays)
 {
@@ -281,11 +268,10 @@ TEST_P(BrokenFileTest, IsRejectedWhereTheTableSays)
     bool found = false;
     for (const Diagnostic& d : read.diagnostics()) {
         found = found || (d.isError() && d.pointer == expected.pointer && d.line == expected.line &&
-                          d.column == expected.column &&
-                          d.message.find(expected.message) != std::string::npos);
+                          d.column == expected.column && d.message.find(expected.message) != std::string::npos);
     }
-    EXPECT_TRUE(found) << "expected " << expected.line << ":" << expected.column << " "
-                       << expected.pointer << ": ..." << expected.message << "...\ngot:\n"
+    EXPECT_TRUE(found) << "expected " << expected.line << ":" << expected.column << " " << expected.pointer << ": ..."
+                       << expected.message << "...\ngot:\n"
                        << describe(read.diagnostics());
 }
 
@@ -321,8 +307,7 @@ TEST(SceneJsonBrokenFiles, EveryBrokenFileIsListedInTheTable)
         const std::string name = entry.path().filename().string();
         if (name == "expected.tsv")
             continue;
-        const bool listed = std::any_of(table.begin(), table.end(),
-                                        [&](const auto& row) { return row.name == name; });
+        const bool listed = std::any_of(table.begin(), table.end(), [&](const auto& row) { return row.name == name; });
         EXPECT_TRUE(listed) << name << " has no row in expected.tsv";
     }
     for (const auto& row : table)
@@ -537,8 +522,7 @@ TEST(SceneJsonWrite, EveryDoubleKeepsAllItsBits)
         }
         part.vertices.push_back(v);
     }
-    part.vertices.push_back(Vec3(std::numeric_limits<double>::denorm_min(),
-                                 std::numeric_limits<double>::max(), -0.0));
+    part.vertices.push_back(Vec3(std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(), -0.0));
     scene.objects.push_back(Object{"o", "", {part}});
     const Result<Scene> read = parseScene(serializeScene(scene));
     ASSERT_TRUE(read.ok()) << describe(read.diagnostics());
@@ -546,8 +530,7 @@ TEST(SceneJsonWrite, EveryDoubleKeepsAllItsBits)
     ASSERT_EQ(back.size(), part.vertices.size());
     for (std::size_t i = 0; i < back.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            ASSERT_EQ(std::bit_cast<std::uint64_t>(back[i][c]),
-                      std::bit_cast<std::uint64_t>(part.vertices[i][c]))
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(back[i][c]), std::bit_cast<std::uint64_t>(part.vertices[i][c]))
                 << i << " " << c;
 }
 
@@ -561,8 +544,7 @@ TEST(SceneJsonWrite, TheLayoutIsIndentedByTwoSpacesWithNumbersInlineAndOneFinalN
     EXPECT_EQ(saved.find('\t'), std::string::npos);
     EXPECT_EQ(saved.rfind("{\n  \"format\": \"regio-scene\",\n  \"version\": 1,\n", 0), 0u);
     EXPECT_NE(saved.find("\n            [1.0, 0.5, 1.0],\n"), std::string::npos);
-    EXPECT_NE(saved.find("\n            { \"id\": \"box.top\", \"loop\": [3, 7, 6, 2] },\n"),
-              std::string::npos);
+    EXPECT_NE(saved.find("\n            { \"id\": \"box.top\", \"loop\": [3, 7, 6, 2] },\n"), std::string::npos);
     // No line is longer than the width that flat objects are folded at.
     std::stringstream lines(saved);
     for (std::string line; std::getline(lines, line);)
@@ -595,10 +577,7 @@ TEST(SceneJsonWrite, WritingIsAPureFunctionOfTheScene)
 // Wall-clock bounds (CTest label "timing"): hostile input is refused without
 // reading on for long. Where it is refused is checked above.
 
-TEST(SceneJsonSyntaxTiming, AHugeNumberIsRefusedQuickly)
-{
-    EXPECT_LT(secondsToParse(hugeNumberScene()), 2.0);
-}
+TEST(SceneJsonSyntaxTiming, AHugeNumberIsRefusedQuickly) { EXPECT_LT(secondsToParse(hugeNumberScene()), 2.0); }
 
 TEST(SceneJsonSyntaxTiming, AnUnterminatedHugeStringIsRefusedQuickly)
 {

@@ -68,8 +68,8 @@ Part tetrahedronPart(const std::string& id, Vec3 a, Vec3 b, Vec3 c, Vec3 d)
     part.id = id;
     part.material = "white";
     part.vertices = {a, b, c, d};
-    part.faces = {Face{id + ".abc", {0, 2, 1}, {}}, Face{id + ".abd", {0, 1, 3}, {}},
-                  Face{id + ".bcd", {1, 2, 3}, {}}, Face{id + ".cad", {2, 0, 3}, {}}};
+    part.faces = {Face{id + ".abc", {0, 2, 1}, {}}, Face{id + ".abd", {0, 1, 3}, {}}, Face{id + ".bcd", {1, 2, 3}, {}},
+                  Face{id + ".cad", {2, 0, 3}, {}}};
     return part;
 }
 
@@ -123,10 +123,7 @@ std::vector<std::string> bodyFace(const std::string& name) { return {"box", "box
 
 } // namespace
 
-TEST(Validation, ClosedLitBoxInsideItsRegionHasNoDiagnostics)
-{
-    EXPECT_EQ(dump(validateScene(cleanScene())), "");
-}
+TEST(Validation, ClosedLitBoxInsideItsRegionHasNoDiagnostics) { EXPECT_EQ(dump(validateScene(cleanScene())), ""); }
 
 TEST(Validation, SceneWithoutRegionsSkipsTheRegionRules)
 {
@@ -202,8 +199,7 @@ TEST(Validation, ReflectanceOfOneIsAnError)
 {
     Scene scene = cleanScene();
     scene.materials[0].reflectance.y = 1.0;
-    expectOnly(validateScene(scene), Severity::Error, "/materials/0/reflectance/1", {"white"},
-               "must be below 1");
+    expectOnly(validateScene(scene), Severity::Error, "/materials/0/reflectance/1", {"white"}, "must be below 1");
 }
 
 TEST(Validation, NegativeReflectanceIsAnError)
@@ -282,16 +278,16 @@ TEST(Validation, WarpedFaceIsAnError)
     // The base corner lifted by 0.1 m: the base leaves its plane by ~2.5 cm,
     // beyond 1 % of its 1.41 m diagonal.
     Part pyramid = pyramidPart("box.body", {{0, 0, 0.1}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-    expectOnly(validateScene(sceneWith(pyramid)), Severity::Error, "/objects/0/parts/0/faces/0",
-               bodyFace("base"), "is not planar");
+    expectOnly(validateScene(sceneWith(pyramid)), Severity::Error, "/objects/0/parts/0/faces/0", bodyFace("base"),
+               "is not planar");
 }
 
 TEST(Validation, SlightlyNonPlanarFaceIsAWarning)
 {
     // Lifted by 1 mm: 0.25 mm off the plane, above 1e-4 of the diagonal.
     Part pyramid = pyramidPart("box.body", {{0, 0, 0.001}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-    expectOnly(validateScene(sceneWith(pyramid)), Severity::Warning, "/objects/0/parts/0/faces/0",
-               bodyFace("base"), "slightly non-planar");
+    expectOnly(validateScene(sceneWith(pyramid)), Severity::Warning, "/objects/0/parts/0/faces/0", bodyFace("base"),
+               "slightly non-planar");
 }
 
 TEST(Validation, PlanarityWithinToleranceIsAccepted)
@@ -305,8 +301,8 @@ TEST(Validation, NonConvexFaceIsAnError)
 {
     // A dart: the fourth corner points into the base.
     Part pyramid = pyramidPart("box.body", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.6, 0.4, 0}});
-    expectOnly(validateScene(sceneWith(pyramid)), Severity::Error, "/objects/0/parts/0/faces/0",
-               bodyFace("base"), "not convex");
+    expectOnly(validateScene(sceneWith(pyramid)), Severity::Error, "/objects/0/parts/0/faces/0", bodyFace("base"),
+               "not convex");
 }
 
 TEST(Validation, ZeroAreaFaceIsAnError)
@@ -329,8 +325,8 @@ TEST(Validation, SliverFaceIsAWarning)
 {
     // abc is 1 m long and 10 um wide.
     Part tetra = tetrahedronPart("box.body", {0, 0, 0}, {1, 0, 0}, {0.5, 1e-5, 0}, {0.5, 0.5, 1});
-    expectOnly(validateScene(sceneWith(tetra)), Severity::Warning, "/objects/0/parts/0/faces/0",
-               bodyFace("abc"), "sliver");
+    expectOnly(validateScene(sceneWith(tetra)), Severity::Warning, "/objects/0/parts/0/faces/0", bodyFace("abc"),
+               "sliver");
 }
 
 // --- topology ------------------------------------------------------------------
@@ -452,8 +448,7 @@ TEST(Validation, PartOutsideEveryRegionIsAWarning)
 {
     Scene scene = cleanScene();
     scene.regions[0] = Region{"far", "", {5, 5, 5}, {6, 6, 6}, {}};
-    expectOnly(validateScene(scene), Severity::Warning, "/objects/0/parts/0", kBodyPath,
-               "lies outside every region");
+    expectOnly(validateScene(scene), Severity::Warning, "/objects/0/parts/0", kBodyPath, "lies outside every region");
 }
 
 TEST(Validation, BspOrderNamingAnUnknownFaceIsAnError)
@@ -475,8 +470,7 @@ TEST(Validation, BspOrderNamingAFaceOutsideTheRegionIsAnError)
 {
     Scene scene = cleanScene();
     scene.regions.push_back(Region{"attic", "", {-1, -1, 2}, {2, 2, 3}, {"box.body.top"}});
-    expectOnly(validateScene(scene), Severity::Error, "/regions/1/bspOrder/0", {"attic"},
-               "lies outside the region");
+    expectOnly(validateScene(scene), Severity::Error, "/regions/1/bspOrder/0", {"attic"}, "lies outside the region");
 }
 
 TEST(Validation, BspOrderMayNameAFaceThatCrossesIntoTheRegion)
@@ -496,16 +490,14 @@ TEST(Validation, FaceMeetingTheRegionOnlyAlongALineIsOutsideIt)
     Scene scene = cleanScene();
     scene.regions[0].max.x = 1.0;
     scene.regions.push_back(Region{"side", "", {1, 1, -1}, {2, 2, 2}, {"box.body.right"}});
-    expectOnly(validateScene(scene), Severity::Error, "/regions/1/bspOrder/0", {"side"},
-               "lies outside the region");
+    expectOnly(validateScene(scene), Severity::Error, "/regions/1/bspOrder/0", {"side"}, "lies outside the region");
 }
 
 TEST(Validation, FaceListedTwiceInABspOrderIsAWarning)
 {
     Scene scene = cleanScene();
     scene.regions[0].bspOrder = {"box.body.top", "box.body.left", "box.body.top"};
-    expectOnly(validateScene(scene), Severity::Warning, "/regions/0/bspOrder/2", {"room"},
-               "listed twice");
+    expectOnly(validateScene(scene), Severity::Warning, "/regions/0/bspOrder/2", {"room"}, "listed twice");
 }
 
 // --- scale -----------------------------------------------------------------------
@@ -561,8 +553,11 @@ std::vector<InvalidFile> loadInvalidFileTable()
             cells.push_back(cell);
         if (cells.size() != 5)
             continue;
-        InvalidFile file{cells[0], cells[1] == "warning" ? Severity::Warning : Severity::Error,
-                         cells[2] == "-" ? "" : cells[2], {}, cells[4]};
+        InvalidFile file{cells[0],
+                         cells[1] == "warning" ? Severity::Warning : Severity::Error,
+                         cells[2] == "-" ? "" : cells[2],
+                         {},
+                         cells[4]};
         if (cells[3] != "-") {
             for (size_t open = cells[3].find('"'); open != std::string::npos;) {
                 size_t close = cells[3].find('"', open + 1);
@@ -575,7 +570,7 @@ std::vector<InvalidFile> loadInvalidFileTable()
     return table;
 }
 
-class InvalidSceneFile : public testing::TestWithParam<InvalidFile> {};
+class InvalidSceneFile : public testing::TestWithParam<InvalidFile> { };
 
 } // namespace
 

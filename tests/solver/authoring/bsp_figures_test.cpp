@@ -73,8 +73,8 @@ double millisecondsOf(auto&& work)
 
 TEST(BspFigures, EqualTheFiguresOfAFullPreparationInEveryRegionMode)
 {
-    for (const model::Scene& scene : {test::loadSample("two-lights-room"), test::loadSample("cornell-box"),
-                                      test::furnishedRoom(7, 30)})
+    for (const model::Scene& scene :
+         {test::loadSample("two-lights-room"), test::loadSample("cornell-box"), test::furnishedRoom(7, 30)})
         for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto}) {
             SCOPED_TRACE(int(mode));
             expectSameFigures(figuresOk(scene, mode), fullPreparationFigures(scene, mode));

@@ -147,10 +147,11 @@ TEST(BspSuggest, GivesNoMoreFragmentsThanSceneOrderOnTheSampleAndTheFurnishedRoo
     auto suggestions = suggestBspOrders(room);
     ASSERT_TRUE(suggestions);
     for (const BspOrderSuggestion& s : *suggestions) {
-        std::printf("two-lights-room %-8s scene order: fragments %4d splits %4d depth %3d | suggested: fragments "
-                    "%4d splits %4d depth %3d\n",
-                    s.regionId.c_str(), s.current.fragments, s.current.splits, s.current.depth, s.suggested.fragments,
-                    s.suggested.splits, s.suggested.depth);
+        std::printf(
+            "two-lights-room %-8s scene order: fragments %4d splits %4d depth %3d | suggested: fragments "
+            "%4d splits %4d depth %3d\n",
+            s.regionId.c_str(), s.current.fragments, s.current.splits, s.current.depth, s.suggested.fragments,
+            s.suggested.splits, s.suggested.depth);
         EXPECT_LE(s.suggested.fragments, s.current.fragments) << s.regionId;
     }
 
@@ -159,10 +160,11 @@ TEST(BspSuggest, GivesNoMoreFragmentsThanSceneOrderOnTheSampleAndTheFurnishedRoo
     auto single = suggestBspOrder(furnished, "all");
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(single);
-    std::printf("furnished-room-100 single BSP  scene order: fragments %5d splits %5d depth %3d | suggested: "
-                "fragments %5d splits %5d depth %3d  (%.0f ms)\n",
-                single->current.fragments, single->current.splits, single->current.depth, single->suggested.fragments,
-                single->suggested.splits, single->suggested.depth, ms);
+    std::printf(
+        "furnished-room-100 single BSP  scene order: fragments %5d splits %5d depth %3d | suggested: "
+        "fragments %5d splits %5d depth %3d  (%.0f ms)\n",
+        single->current.fragments, single->current.splits, single->current.depth, single->suggested.fragments,
+        single->suggested.splits, single->suggested.depth, ms);
     EXPECT_LE(single->suggested.fragments, single->current.fragments);
 }
 

@@ -242,8 +242,10 @@ TEST(RegionProposal, SplitsAlongTheOnlyAxisThatHasAGap)
     // Two slabs overlapping in x and y; only z separates them (0.2 .. 0.3).
     model::Scene scene;
     scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
-    scene.objects.push_back({"slabs", "", {*model::makeBox("slabs.a", {0, 0, 0}, {3, 1, 0.2}, "white"),
-                                           *model::makeBox("slabs.b", {1, 0, 0.3}, {4, 1, 0.5}, "white")}});
+    scene.objects.push_back({"slabs",
+                             "",
+                             {*model::makeBox("slabs.a", {0, 0, 0}, {3, 1, 0.2}, "white"),
+                              *model::makeBox("slabs.b", {1, 0, 0.3}, {4, 1, 0.5}, "white")}});
     RegionProposalOptions fine;
     fine.patchThreshold = 1;
     const model::Result<RegionProposal> proposal = proposeRegions(scene, fine);
@@ -260,10 +262,12 @@ TEST(RegionProposal, KeepsPartsThatNoPlaneSeparatesTogether)
     // blocks as it can and names them.
     model::Scene scene;
     scene.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {1, 1, 1}});
-    scene.objects.push_back({"pinwheel", "", {*model::makeBox("pinwheel.a", {0, 0, 0}, {1.95, 1, 0.95}, "white"),
-                                              *model::makeBox("pinwheel.b", {2.05, 0, 0}, {3, 1, 1.95}, "white"),
-                                              *model::makeBox("pinwheel.c", {1.05, 0, 2.05}, {3, 1, 3}, "white"),
-                                              *model::makeBox("pinwheel.d", {0, 0, 1.05}, {0.95, 1, 3}, "white")}});
+    scene.objects.push_back({"pinwheel",
+                             "",
+                             {*model::makeBox("pinwheel.a", {0, 0, 0}, {1.95, 1, 0.95}, "white"),
+                              *model::makeBox("pinwheel.b", {2.05, 0, 0}, {3, 1, 1.95}, "white"),
+                              *model::makeBox("pinwheel.c", {1.05, 0, 2.05}, {3, 1, 3}, "white"),
+                              *model::makeBox("pinwheel.d", {0, 0, 1.05}, {0.95, 1, 3}, "white")}});
     RegionProposalOptions fine;
     fine.patchThreshold = 1;
     fine.cutParts = false;
@@ -316,8 +320,8 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
         const char* name;
         model::Scene scene;
     };
-    for (const Case& c :
-         {Case{"two-lights-room", test::loadSample("two-lights-room")}, Case{"furnished-room-100", test::furnishedRoom(1, 100)}}) {
+    for (const Case& c : {Case{"two-lights-room", test::loadSample("two-lights-room")},
+                          Case{"furnished-room-100", test::furnishedRoom(1, 100)}}) {
         SCOPED_TRACE(c.name);
         auto row = [&](const char* setup, const SceneBspFigures& f) { printRow(c.name, setup, f); };
         model::Scene sceneOrder = c.scene;
@@ -355,14 +359,15 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
 
         const model::Result<RegionProposal> proposal = proposeRegions(c.scene);
         ASSERT_TRUE(proposal.ok());
-        const SceneBspFigures proposalSceneOrder =
-            figuresOk(withRegions(c.scene, [&] {
-                          std::vector<model::Region> bare = proposal->regions;
-                          for (model::Region& r : bare)
-                              r.bspOrder.clear();
-                          return bare;
-                      }()),
-                      RegionsMode::Authored);
+        const SceneBspFigures proposalSceneOrder = figuresOk(withRegions(c.scene,
+                                                                         [&] {
+                                                                             std::vector<model::Region> bare =
+                                                                                 proposal->regions;
+                                                                             for (model::Region& r : bare)
+                                                                                 r.bspOrder.clear();
+                                                                             return bare;
+                                                                         }()),
+                                                             RegionsMode::Authored);
         row("proposed, scene order", proposalSceneOrder);
         row("proposed, suggested orders", proposal->figures);
         EXPECT_LT(proposal->figures.fragments, single.fragments);
@@ -376,7 +381,8 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
         model::Scene clipped = withRegions(c.scene, proposal->regions);
         for (const std::string& part : proposal->straddlingParts)
             ASSERT_TRUE(model::clipPartToRegions(clipped, part)) << part;
-        row("proposed, cut parts clipped, suggested orders", figuresOk(withSuggestedOrders(clipped), RegionsMode::Authored));
+        row("proposed, cut parts clipped, suggested orders",
+            figuresOk(withSuggestedOrders(clipped), RegionsMode::Authored));
         std::printf("|   (%zu parts cut by the proposal, %zu without cutParts)\n", proposal->straddlingParts.size(),
                     gaps->straddlingParts.size());
 

@@ -67,7 +67,8 @@ struct Fixture {
     std::vector<Vec3> points(int fragment) const
     {
         const Fragment& f = scene.fragments[size_t(fragment)];
-        return {scene.fragmentPoints.begin() + f.firstPoint, scene.fragmentPoints.begin() + f.firstPoint + f.pointCount};
+        return {scene.fragmentPoints.begin() + f.firstPoint,
+                scene.fragmentPoints.begin() + f.firstPoint + f.pointCount};
     }
 };
 
@@ -127,7 +128,7 @@ TEST(BspTree, HonoursTheRootOrderAtEveryLevel)
 {
     Fixture fx;
     fx.add(quad({0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}));   // floor y = 0 (normal -y)
-    fx.add(quad({2, -1, 0}, {2, 3, 0}, {2, 3, 4}, {2, -1, 4}));  // wall x = 2, crosses the floor
+    fx.add(quad({2, -1, 0}, {2, 3, 0}, {2, 3, 4}, {2, -1, 4})); // wall x = 2, crosses the floor
     fx.add(quad({0, 1, 0}, {0, 1, 4}, {4, 1, 4}, {4, 1, 0}));   // shelf y = 1
     // Wall first, then shelf, then floor.
     fx.build({2, 0, 1});
@@ -149,10 +150,10 @@ TEST(BspTree, HonoursTheRootOrderAtEveryLevel)
 TEST(BspTree, PutsCoplanarFacesOfBothOrientationsIntoOneNode)
 {
     Fixture fx;
-    fx.add(quad({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}));  // z = 0, normal +z
-    fx.add(quad({5, 0, 0}, {5, 1, 0}, {6, 1, 0}, {6, 0, 0}));  // z = 0, normal -z, elsewhere on the plane
-    fx.add(quad({2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {2, 1, 0}));  // z = 0, normal +z
-    fx.add(quad({0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}));  // z = 2
+    fx.add(quad({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0})); // z = 0, normal +z
+    fx.add(quad({5, 0, 0}, {5, 1, 0}, {6, 1, 0}, {6, 0, 0})); // z = 0, normal -z, elsewhere on the plane
+    fx.add(quad({2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {2, 1, 0})); // z = 0, normal +z
+    fx.add(quad({0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2})); // z = 2
     fx.build();
     expectValidBsp(fx);
     const BspNode& root = fx.scene.nodes[size_t(fx.scene.regions[0].bspRoot)];
@@ -203,7 +204,8 @@ TEST(BspTree, KeepsEverySplitFragmentOnItsSideAndItsAreaOnRandomTriangles)
         for (const BspNode& node : fx.scene.nodes) {
             int nodeRank = rank[size_t(fx.scene.fragments[size_t(node.firstFragment)].properties)];
             for (int i = 0; i < node.fragmentCount; ++i)
-                nodeRank = std::min(nodeRank, rank[size_t(fx.scene.fragments[size_t(node.firstFragment + i)].properties)]);
+                nodeRank =
+                    std::min(nodeRank, rank[size_t(fx.scene.fragments[size_t(node.firstFragment + i)].properties)]);
             for (int child : {node.back, node.front})
                 for (int f : fx.subtreeFragments(child))
                     EXPECT_GT(rank[size_t(fx.scene.fragments[size_t(f)].properties)], nodeRank);

@@ -59,9 +59,9 @@ double triangleArea(const PreparedScene& s, const std::array<int, 3>& v)
 }
 
 const std::vector<std::vector<Vec3>> kRoomCorner{
-    {{0, 0, 0}, {0, 0, 2}, {3, 0, 2}, {3, 0, 0}},       // floor, normal +y
-    {{0, 0, 0}, {3, 0, 0}, {3, 2.5, 0}, {0, 2.5, 0}},   // back wall, normal +z
-    {{1, 0.5, 0.5}, {1.4, 0.5, 0.5}, {1.2, 0.9, 0.5}},  // a small triangle in the room, normal +z
+    {{0, 0, 0}, {0, 0, 2}, {3, 0, 2}, {3, 0, 0}},             // floor, normal +y
+    {{0, 0, 0}, {3, 0, 0}, {3, 2.5, 0}, {0, 2.5, 0}},         // back wall, normal +z
+    {{1, 0.5, 0.5}, {1.4, 0.5, 0.5}, {1.2, 0.9, 0.5}},        // a small triangle in the room, normal +z
     {{0.3, 1, 1}, {0.3, 1, 0.2}, {2.3, 1, 0.2}, {2.3, 1, 1}}, // a shelf seen from below, normal -y
 };
 
@@ -106,8 +106,9 @@ TEST(Meshing, ElementsCoverTheirPatchExactlyForEveryRatio)
                 EXPECT_NEAR(element.area, triangleArea(s, element.vertices), 1e-15);
                 EXPECT_NEAR(element.area, patch.area / ratio, 1e-12) << "the grid gives equal elements";
                 // Counter-clockwise around the face normal, like the patch.
-                const Vec3 n = glm::cross(s.vertices[size_t(element.vertices[1])] - s.vertices[size_t(element.vertices[0])],
-                                          s.vertices[size_t(element.vertices[2])] - s.vertices[size_t(element.vertices[0])]);
+                const Vec3 n =
+                    glm::cross(s.vertices[size_t(element.vertices[1])] - s.vertices[size_t(element.vertices[0])],
+                               s.vertices[size_t(element.vertices[2])] - s.vertices[size_t(element.vertices[0])]);
                 EXPECT_GT(glm::dot(n, element.normal), 0.0);
                 area += element.area;
             }
@@ -120,12 +121,14 @@ TEST(Meshing, ElementsAreSimilarToTheirPatch)
 {
     PreparedScene s = meshed(kRoomCorner, 0.5, 9);
     for (const Patch& patch : s.patches) {
-        const double patchAngle = minimumAngleDegrees(s.vertices[size_t(patch.vertices[0])], s.vertices[size_t(patch.vertices[1])],
-                                                      s.vertices[size_t(patch.vertices[2])]);
+        const double patchAngle =
+            minimumAngleDegrees(s.vertices[size_t(patch.vertices[0])], s.vertices[size_t(patch.vertices[1])],
+                                s.vertices[size_t(patch.vertices[2])]);
         for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
             const auto& v = s.elements[size_t(e)].vertices;
-            EXPECT_NEAR(minimumAngleDegrees(s.vertices[size_t(v[0])], s.vertices[size_t(v[1])], s.vertices[size_t(v[2])]),
-                        patchAngle, 1e-6);
+            EXPECT_NEAR(
+                minimumAngleDegrees(s.vertices[size_t(v[0])], s.vertices[size_t(v[1])], s.vertices[size_t(v[2])]),
+                patchAngle, 1e-6);
         }
     }
 }
@@ -144,7 +147,8 @@ TEST(Meshing, TheElementMeshOfAFaceIsConforming)
             const Patch& patch = s.patches[size_t(p)];
             for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
                 for (int i = 0; i < 3; ++i)
-                    ++directed[{s.elements[size_t(e)].vertices[size_t(i)], s.elements[size_t(e)].vertices[size_t((i + 1) % 3)]}];
+                    ++directed[{s.elements[size_t(e)].vertices[size_t(i)],
+                                s.elements[size_t(e)].vertices[size_t((i + 1) % 3)]}];
         }
         double boundary = 0.0;
         for (const auto& [edge, count] : directed) {

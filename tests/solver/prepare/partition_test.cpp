@@ -19,10 +19,7 @@ std::vector<Vec3> square(Vec3 offset = Vec3{0.0})
     return {offset + Vec3{0, 0, 0}, offset + Vec3{1, 0, 0}, offset + Vec3{1, 1, 0}, offset + Vec3{0, 1, 0}};
 }
 
-Plane planeX(double x)
-{
-    return Plane::fromPointNormal({x, 0, 0}, {1, 0, 0});
-}
+Plane planeX(double x) { return Plane::fromPointNormal({x, 0, 0}, {1, 0, 0}); }
 
 } // namespace
 
@@ -88,8 +85,7 @@ TEST(Partition, ARootKeepsItsCoplanarPolygonsOfBothOrientationsAndSplitsTheSpann
     const std::vector<Vec3> spanning{{0.5, 0, -1}, {0.5, 0, 1}, {0.5, 1, 1}, {0.5, 1, -1}};
     const std::vector<Vec3> above = square({0, 0, 2});
     std::vector<FacePolygon> polygons{{above, 0}, {root, 1}, {spanning, 2}, {coplanarBack, 3}};
-    const BspPartition parts =
-        partitionAtRoot(std::move(polygons), 1, Plane::fromPointNormal({0, 0, 0}, {0, 0, 1}));
+    const BspPartition parts = partitionAtRoot(std::move(polygons), 1, Plane::fromPointNormal({0, 0, 0}, {0, 0, 1}));
     ASSERT_EQ(parts.on.size(), 2u);
     EXPECT_EQ(parts.on[0].face, 1) << "subset order, the root among them";
     EXPECT_EQ(parts.on[1].face, 3);

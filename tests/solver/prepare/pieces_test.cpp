@@ -118,8 +118,8 @@ TEST(Pieces, CutPointsAreSharedSoThePiecesOfAFaceMeetEdgeToEdge)
                 for (const auto& [edge, count] : directed[f]) {
                     ASSERT_EQ(count, 1) << named.name << " face " << face.id;
                     if (!directed[f].count({edge.second, edge.first}))
-                        boundary += glm::length(s.pieceVertices[size_t(edge.second)] -
-                                                s.pieceVertices[size_t(edge.first)]);
+                        boundary +=
+                            glm::length(s.pieceVertices[size_t(edge.second)] - s.pieceVertices[size_t(edge.first)]);
                 }
                 double perimeter = 0.0;
                 for (size_t i = 0; i < face.polygon.size(); ++i)

@@ -110,7 +110,8 @@ TEST(Prepare, AuthoredRegionsClipTheRoomAtTheSeparatingPlanes)
     ASSERT_EQ(s.regions.size(), 2u);
     EXPECT_EQ(s.regions[0].id, "cell-0-0");
     // Floor, ceiling and the two long walls cross x = 3 and are cut in two.
-    EXPECT_EQ(s.stats.regionPieces, s.stats.inputFaces + 4 + 2 /* the lamp's top and bottom */ + 2 /* its long sides */);
+    EXPECT_EQ(s.stats.regionPieces,
+              s.stats.inputFaces + 4 + 2 /* the lamp's top and bottom */ + 2 /* its long sides */);
     for (const Fragment& f : s.fragments)
         for (int i = 0; i < f.pointCount; ++i) {
             const Vec3& p = s.fragmentPoints[size_t(f.firstPoint + i)];
@@ -192,7 +193,8 @@ TEST(Prepare, RefusesUnknownMaterialsAndNonConvexFacesWithTheirPointers)
 
     model::Scene arrow;
     arrow.materials.push_back({"white", "", {0.5, 0.5, 0.5}, {0, 0, 0}});
-    model::Part part{"p", "", "white", {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}}, {{"p.f", {0, 1, 2, 3, 4}, ""}}};
+    model::Part part{
+        "p", "", "white", {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}}, {{"p.f", {0, 1, 2, 3, 4}, ""}}};
     arrow.objects.push_back({"o", "", {part}});
     result = prepareScene(arrow);
     EXPECT_FALSE(result.ok());
@@ -241,11 +243,15 @@ TEST(Prepare, PreparesTheSampleScenesInEveryRegionMode)
             if (area < 0.0)
                 area = st.area;
             EXPECT_NEAR(st.area, area, 1e-9 * area);
-            std::printf("%-22s %-8s regions %3zu  faces %4d  pieces %4d  fragments %4d  splits %4d  depth %3d  "
-                        "patches %5d  elements %6d\n",
-                        name, mode == RegionsMode::None ? "none" : mode == RegionsMode::Authored ? "authored" : "auto",
-                        result->regions.size(), st.inputFaces, st.regionPieces, st.fragments, st.splits,
-                        st.maxDepth, st.patches, st.elements);
+            std::printf(
+                "%-22s %-8s regions %3zu  faces %4d  pieces %4d  fragments %4d  splits %4d  depth %3d  "
+                "patches %5d  elements %6d\n",
+                name,
+                mode == RegionsMode::None       ? "none"
+                : mode == RegionsMode::Authored ? "authored"
+                                                : "auto",
+                result->regions.size(), st.inputFaces, st.regionPieces, st.fragments, st.splits, st.maxDepth,
+                st.patches, st.elements);
         }
     }
     EXPECT_EQ(scenes, 2);

@@ -27,8 +27,7 @@ Box3 box(Vec3 min, Vec3 max)
 // Four boxes around an empty centre that no axis-aligned plane separates.
 std::vector<Box3> pinwheel()
 {
-    return {box({0, 0, 0}, {2, 1, 1}), box({2, 0, 0}, {3, 2, 1}), box({1, 2, 0}, {3, 3, 1}),
-            box({0, 1, 0}, {1, 3, 1})};
+    return {box({0, 0, 0}, {2, 1, 1}), box({2, 0, 0}, {3, 2, 1}), box({1, 2, 0}, {3, 3, 1}), box({0, 1, 0}, {1, 3, 1})};
 }
 
 // Regions below a node, and a check that every inner plane separates the
@@ -208,8 +207,8 @@ TEST(RegionalTree, AssignsFacesOutsideEveryRegionBoxToSomeCell)
     RegionalTreeBuild build = buildRegionalTree(boxes);
     ASSERT_TRUE(build.ok());
     std::vector<FacePolygon> polygons{
-        {{{-5, 7, -5}, {-4, 7, -5}, {-4, 8, -5}}, 0}, // far beyond region 0
-        {{{9, 7, 9}, {10, 7, 9}, {10, 8, 9}}, 1},     // far beyond region 1
+        {{{-5, 7, -5}, {-4, 7, -5}, {-4, 8, -5}}, 0},              // far beyond region 0
+        {{{9, 7, 9}, {10, 7, 9}, {10, 8, 9}}, 1},                  // far beyond region 1
         {{{1.2, 5, 0}, {1.8, 5, 0}, {1.8, 6, 0}, {1.2, 6, 0}}, 2}, // in the gap, crosses the plane
     };
     const double before = totalArea(polygons);

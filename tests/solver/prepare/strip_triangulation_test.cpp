@@ -30,10 +30,7 @@ std::vector<Vec3> regularPolygon(int corners, double radius, const Vec3& centre 
     return loop;
 }
 
-std::vector<Vec3> rectangle(double w, double h)
-{
-    return {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}};
-}
+std::vector<Vec3> rectangle(double w, double h) { return {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}}; }
 
 struct CoverReport {
     double area = 0.0;
@@ -76,9 +73,7 @@ void expectConformingTiling(const StripMesh& mesh, const std::vector<Vec3>& poly
         bool onBoundary = false;
         for (size_t i = 0; i < polygon.size() && !onBoundary; ++i) {
             const Vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-            auto distance = [&](const Vec3& x) {
-                return glm::length(glm::cross(x - a, b - a)) / glm::length(b - a);
-            };
+            auto distance = [&](const Vec3& x) { return glm::length(glm::cross(x - a, b - a)) / glm::length(b - a); };
             onBoundary = distance(p) < 1e-9 && distance(q) < 1e-9;
         }
         EXPECT_TRUE(onBoundary) << "an outer edge inside the polygon (gap or T-vertex)";
@@ -121,9 +116,9 @@ TEST(StripTriangulation, CoversSquaresOfAnySizeExactlyWithoutSlivers)
 TEST(StripTriangulation, CoversTrianglesExactlyWithoutSliversUnlessTheirCornersAreSharp)
 {
     const double h = std::sqrt(3.0) / 2.0;
-    expectExactCover({{0, 0, 0}, {1, 0, 0}, {0.5, h, 0}}, 0.3, kStripMinAngleDegrees);   // equilateral
-    expectExactCover({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 0.5, kStripMinAngleDegrees);     // right isosceles
-    expectExactCover({{0, 0, 0}, {3, 0, 0}, {2.5, 0.4, 0}}, 0.5, 0.0);                  // obtuse and flat
+    expectExactCover({{0, 0, 0}, {1, 0, 0}, {0.5, h, 0}}, 0.3, kStripMinAngleDegrees); // equilateral
+    expectExactCover({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 0.5, kStripMinAngleDegrees);   // right isosceles
+    expectExactCover({{0, 0, 0}, {3, 0, 0}, {2.5, 0.4, 0}}, 0.5, 0.0);                 // obtuse and flat
 }
 
 TEST(StripTriangulation, CoversRegularPolygonsExactlyWithoutSlivers)
@@ -203,8 +198,7 @@ TEST(StripTriangulation, KeepsPatchesAboutThePatchSizeOnSlantedSides)
         StripMesh mesh = stripTriangulate(regularPolygon(corners, 2.0), Vec3{0, 0, 1}, 0.5);
         for (const Triangle& t : mesh.triangles)
             for (int i = 0; i < 3; ++i)
-                EXPECT_LE(
-                    glm::length(mesh.points[size_t(t[size_t(i)])] - mesh.points[size_t(t[size_t((i + 1) % 3)])]),
-                    2.0 * 0.5);
+                EXPECT_LE(glm::length(mesh.points[size_t(t[size_t(i)])] - mesh.points[size_t(t[size_t((i + 1) % 3)])]),
+                          2.0 * 0.5);
     }
 }

@@ -2,8 +2,8 @@
 // a round is due, how far a round may grow the mesh, which elements go first,
 // and that a cancelled round resumes to the very mesh an uninterrupted one
 // makes.
-#include "solver/shooting/adaptive_refinement.h"
 #include "solver/prepare/prepare.h"
+#include "solver/shooting/adaptive_refinement.h"
 #include "solver/shooting/shooting.h"
 
 #include "support/adaptive_scenes.h"

@@ -1,9 +1,9 @@
 // Adaptive subdivision with anchoring (solver/shooting/adaptive_subdivision.h, paper
 // §5.7 and Figure 5): fine elements where the radiosity changes, a graded and
 // conforming mesh, conserved area and unshot power, paintable pieces.
-#include "solver/shooting/adaptive_subdivision.h"
 #include "solver/prepare/pieces.h"
 #include "solver/prepare/prepare.h"
+#include "solver/shooting/adaptive_subdivision.h"
 #include "solver/shooting/shooting.h"
 #include "support/sample_scenes.h"
 #include "support/solver_test_scenes.h"
@@ -87,7 +87,8 @@ double shortestEdge(const PreparedScene& s, const Element& e)
 {
     double m = 1e300;
     for (int k = 0; k < 3; ++k)
-        m = std::min(m, glm::length(s.vertices[size_t(e.vertices[size_t(k)])] - s.vertices[size_t(e.vertices[size_t((k + 1) % 3)])]));
+        m = std::min(m, glm::length(s.vertices[size_t(e.vertices[size_t(k)])] -
+                                    s.vertices[size_t(e.vertices[size_t((k + 1) % 3)])]));
     return m;
 }
 
@@ -111,7 +112,8 @@ int countTVertices(const PreparedScene& s, const std::vector<OutputTriangle>& tr
     for (const OutputTriangle& t : triangles) {
         const int face = s.elements[size_t(t.element)].properties;
         for (int k = 0; k < 3; ++k) {
-            const Vec3 a = s.vertices[size_t(t.vertices[size_t(k)])], b = s.vertices[size_t(t.vertices[size_t((k + 1) % 3)])];
+            const Vec3 a = s.vertices[size_t(t.vertices[size_t(k)])],
+                       b = s.vertices[size_t(t.vertices[size_t((k + 1) % 3)])];
             for (int v : verticesOfFace[face])
                 if (strictlyInside(s.vertices[size_t(v)], a, b))
                     ++count;
@@ -125,8 +127,10 @@ bool shareEdgePart(const PreparedScene& s, const Element& x, const Element& y)
 {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const Vec3 a = s.vertices[size_t(x.vertices[size_t(i)])], b = s.vertices[size_t(x.vertices[size_t((i + 1) % 3)])];
-            const Vec3 c = s.vertices[size_t(y.vertices[size_t(j)])], d = s.vertices[size_t(y.vertices[size_t((j + 1) % 3)])];
+            const Vec3 a = s.vertices[size_t(x.vertices[size_t(i)])],
+                       b = s.vertices[size_t(x.vertices[size_t((i + 1) % 3)])];
+            const Vec3 c = s.vertices[size_t(y.vertices[size_t(j)])],
+                       d = s.vertices[size_t(y.vertices[size_t((j + 1) % 3)])];
             const Vec3 ab = glm::normalize(b - a);
             const auto onLine = [&](const Vec3& p) { return glm::length(glm::cross(p - a, ab)) < 1e-9; };
             if (!onLine(c) || !onLine(d))
@@ -223,8 +227,8 @@ TEST(AdaptiveSubdivision, WithAnchoringTheOutputHasNoTVerticesAndTheGradingIsTwo
         EXPECT_EQ(count, 1);
         if (!directed.count({edge.second, edge.first})) {
             const Vec3 a = s.vertices[size_t(edge.first)], b = s.vertices[size_t(edge.second)];
-            const bool onOutline = (a.x == 0 && b.x == 0) || (a.x == 6 && b.x == 6) || (a.y == 0 && b.y == 0) ||
-                                   (a.y == 3 && b.y == 3);
+            const bool onOutline =
+                (a.x == 0 && b.x == 0) || (a.x == 6 && b.x == 6) || (a.y == 0 && b.y == 0) || (a.y == 3 && b.y == 3);
             EXPECT_TRUE(onOutline) << "open edge inside the floor";
         }
     }
@@ -490,7 +494,8 @@ TEST(AdaptiveSubdivision, TheActiveSceneGroupsElementsByPatchAndItsPiecesCoverEv
                     EXPECT_EQ(a.elements[size_t(e)].patch, int(p)) << name;
             std::vector<double> pieceArea(a.elements.size(), 0.0);
             for (const Piece& piece : a.pieces) {
-                const Vec3 p0 = a.pieceVertices[size_t(piece.vertices[0])], p1 = a.pieceVertices[size_t(piece.vertices[1])],
+                const Vec3 p0 = a.pieceVertices[size_t(piece.vertices[0])],
+                           p1 = a.pieceVertices[size_t(piece.vertices[1])],
                            p2 = a.pieceVertices[size_t(piece.vertices[2])];
                 pieceArea[size_t(piece.element)] += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
             }
@@ -538,7 +543,7 @@ TEST(AdaptiveSubdivision, ShootingOnTheGrownMeshKeepsTheEnergyBalanceExact)
     ASSERT_FALSE(room.objects.empty());
     model::Result<PreparedScene> r = prepareScene(room);
     ASSERT_TRUE(r.ok());
-    PreparedScene shot = *r;              // what the shooter sees (active leaves)
+    PreparedScene shot = *r;                 // what the shooter sees (active leaves)
     PreparedScene hierarchy = std::move(*r); // grown by the AdaptiveMesh
     Shooting shooting(shot, 48, model::Visibility::Painter);
     for (int i = 0; i < 6; ++i)

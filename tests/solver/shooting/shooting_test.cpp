@@ -111,7 +111,7 @@ TEST(Shooting, UnshotPowerIsJudgedByLuminance)
 {
     model::Scene scene;
     test::addMaterial(scene, "floor", {0.5, 0.5, 0.5});
-    test::addMaterial(scene, "blue", {0.0, 0.0, 0.0}, {0.0, 0.0, 5.0}); // luminance 0.36
+    test::addMaterial(scene, "blue", {0.0, 0.0, 0.0}, {0.0, 0.0, 5.0});  // luminance 0.36
     test::addMaterial(scene, "green", {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}); // luminance 0.72
     test::addPolygon(scene, "floor", {{0, 0, 0}, {0, 0, 4}, {4, 0, 4}, {4, 0, 0}}, "floor");
     test::addPolygon(scene, "blue", {{0.5, 2, 0.5}, {1.5, 2, 0.5}, {1.5, 2, 1.5}, {0.5, 2, 1.5}}, "blue");

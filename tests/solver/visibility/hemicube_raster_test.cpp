@@ -20,7 +20,9 @@ namespace {
 
 // How many times each pixel of the hemicube was written.
 struct Coverage {
-    explicit Coverage(const Hemicube& h) : n(h.resolution()), count(static_cast<size_t>(h.totalPixelCount()), 0)
+    explicit Coverage(const Hemicube& h)
+        : n(h.resolution())
+        , count(static_cast<size_t>(h.totalPixelCount()), 0)
     {
         for (int f = 0; f < kHemicubeFaceCount; ++f)
             offset[size_t(f)] = h.faceOffset(static_cast<HemicubeFace>(f));
@@ -30,7 +32,10 @@ struct Coverage {
         for (int x = x0; x < x1; ++x)
             ++count[static_cast<size_t>(offset[static_cast<int>(f)] + row * n + x)];
     }
-    int at(HemicubeFace f, int x, int y) const { return count[static_cast<size_t>(offset[static_cast<int>(f)] + y * n + x)]; }
+    int at(HemicubeFace f, int x, int y) const
+    {
+        return count[static_cast<size_t>(offset[static_cast<int>(f)] + y * n + x)];
+    }
     int n;
     std::array<int, kHemicubeFaceCount> offset{};
     std::vector<int> count;

@@ -1,7 +1,7 @@
 // The hemicube view of one patch (solver/visibility/hemicube_view.h): the item buffer a
 // shot of that patch would paint, for the editor's hemicube window.
-#include "solver/visibility/hemicube_view.h"
 #include "solver/solver.h"
+#include "solver/visibility/hemicube_view.h"
 #include "support/sample_scenes.h"
 #include "support/solver_test_scenes.h"
 
@@ -68,6 +68,6 @@ TEST(HemicubeView, AnUnknownPatchGivesNoView)
     auto solver = cornellSolver(model::Visibility::Painter);
     ASSERT_TRUE(solver);
     EXPECT_FALSE(renderHemicubeView(solver->prepared(), -1, 32, model::Visibility::Painter));
-    EXPECT_FALSE(renderHemicubeView(solver->prepared(), int(solver->prepared().patches.size()), 32,
-                                    model::Visibility::Painter));
+    EXPECT_FALSE(
+        renderHemicubeView(solver->prepared(), int(solver->prepared().patches.size()), 32, model::Visibility::Painter));
 }

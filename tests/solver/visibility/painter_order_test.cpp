@@ -10,9 +10,9 @@
 // (any two overlapping elements in the wrong order would differ).
 #include "solver/visibility/painter_order.h"
 
+#include "solver/prepare/prepare.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
-#include "solver/prepare/prepare.h"
 #include "solver/visibility/traversal.h"
 #include "solver/visibility/visibility.h"
 #include "support/sample_scenes.h"

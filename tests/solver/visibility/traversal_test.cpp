@@ -231,7 +231,7 @@ TEST(Traversal, BoxBehindPlaneUsesTheCornerFarthestAlongTheNormal)
     Box3 box;
     box.extend(Vec3{0, 0, 0});
     box.extend(Vec3{1, 1, 1});
-    EXPECT_TRUE(boxBehindPlane(box, Plane::fromPointNormal({1, 0, 0}, {1, 0, 0})));  // touching counts as behind
+    EXPECT_TRUE(boxBehindPlane(box, Plane::fromPointNormal({1, 0, 0}, {1, 0, 0}))); // touching counts as behind
     EXPECT_FALSE(boxBehindPlane(box, Plane::fromPointNormal({0.99, 0, 0}, {1, 0, 0})));
     EXPECT_FALSE(boxBehindPlane(box, Plane::fromPointNormal({1.5, 1.5, 1.5}, glm::normalize(Vec3{-1, -1, -1}))));
     EXPECT_TRUE(boxBehindPlane(box, Plane::fromPointNormal({1.01, 1.01, 1.01}, glm::normalize(Vec3{1, 1, 1}))));

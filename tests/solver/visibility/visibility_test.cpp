@@ -27,7 +27,8 @@ PreparedScene prepare(const model::Scene& scene, RegionsMode mode = RegionsMode:
 
 ShooterFrame frameOfPatch(const PreparedScene& p, const Patch& patch)
 {
-    const Vec3 edge = p.vertices[static_cast<size_t>(patch.vertices[1])] - p.vertices[static_cast<size_t>(patch.vertices[0])];
+    const Vec3 edge =
+        p.vertices[static_cast<size_t>(patch.vertices[1])] - p.vertices[static_cast<size_t>(patch.vertices[0])];
     return ShooterFrame::make(patch.centroid, p.properties[static_cast<size_t>(patch.properties)].plane.normal, edge);
 }
 
@@ -47,7 +48,7 @@ bool edgePixel(const ItemBuffer& b, HemicubeFace f, int x, int y)
 }
 
 struct Comparison {
-    int differing = 0;     // pixels whose ids differ
+    int differing = 0;      // pixels whose ids differ
     int differingInner = 0; // ... and that are not edge pixels of either buffer
     int pixels = 0;
 };

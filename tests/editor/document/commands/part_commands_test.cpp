@@ -28,7 +28,8 @@ private slots:
         SceneDocument document;
         test::resetDocument(document, test::smallScene());
         const model::Scene before = document.scene();
-        QVERIFY(document.push(new AddPart(&document, "crate", *model::makeBox("crate.lid", {2, 0.5, 0}, {2.5, 0.55, 0.5}, "red"))));
+        QVERIFY(document.push(
+            new AddPart(&document, "crate", *model::makeBox("crate.lid", {2, 0.5, 0}, {2.5, 0.55, 0.5}, "red"))));
         QCOMPARE(document.scene().findObject("crate")->parts.size(), size_t(2));
         VERIFY_UNDO_REDO(document, before);
     }

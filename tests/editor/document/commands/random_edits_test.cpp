@@ -22,7 +22,11 @@ namespace {
 
 class RandomEditor {
 public:
-    RandomEditor(SceneDocument& document, unsigned seed) : m_document(document), m_random(seed) {}
+    RandomEditor(SceneDocument& document, unsigned seed)
+        : m_document(document)
+        , m_random(seed)
+    {
+    }
 
     static constexpr int kKinds = 22;
 
@@ -87,9 +91,14 @@ private:
         }
         case 17: {
             switch (pick(5)) {
-            case 0: return push(new AddMaterial(&m_document, {fresh("material"), "", {real(0, 0.9), real(0, 0.9), real(0, 0.9)}, {0, 0, 0}}));
-            case 1: return push(new SetMaterialReflectance(&m_document, anyMaterial(), {real(0, 0.9), real(0, 0.9), real(0, 0.9)}));
-            case 2: return push(new SetMaterialEmission(&m_document, anyMaterial(), {real(0, 5), real(0, 5), real(0, 5)}));
+            case 0:
+                return push(new AddMaterial(
+                    &m_document, {fresh("material"), "", {real(0, 0.9), real(0, 0.9), real(0, 0.9)}, {0, 0, 0}}));
+            case 1:
+                return push(
+                    new SetMaterialReflectance(&m_document, anyMaterial(), {real(0, 0.9), real(0, 0.9), real(0, 0.9)}));
+            case 2:
+                return push(new SetMaterialEmission(&m_document, anyMaterial(), {real(0, 5), real(0, 5), real(0, 5)}));
             case 3: return push(new RenameMaterial(&m_document, anyMaterial(), fresh("material")));
             default: return push(new RemoveMaterial(&m_document, anyMaterial())); // refused while in use
             }
@@ -100,7 +109,9 @@ private:
                 const model::Vec3 lo(real(-20, 20), real(-20, 20), real(-20, 20));
                 return push(new AddRegion(&m_document, {fresh("region"), "", lo, lo + model::Vec3(real(0.5, 3)), {}}));
             }
-            case 1: return regions() > 0 && push(new SetRegionBox(&m_document, anyRegion(), {-5, -5, -5}, {real(-4, 5), 5, 5}));
+            case 1:
+                return regions() > 0 &&
+                       push(new SetRegionBox(&m_document, anyRegion(), {-5, -5, -5}, {real(-4, 5), 5, 5}));
             case 2: return regions() > 0 && push(new RenameRegion(&m_document, anyRegion(), fresh("region")));
             default: return regions() > 1 && push(new RemoveRegion(&m_document, anyRegion()));
             }
@@ -183,8 +194,8 @@ private:
         for (int i = 0, n = 1 + pick(6); i < n; ++i)
             any = push(TransformParts::dragStep(&m_document, start,
                                                 glm::translate(glm::dmat4(1.0), {real(-1, 1), 0.0, real(-1, 1)}),
-                                                serial, QStringLiteral("drag")))
-                  || any;
+                                                serial, QStringLiteral("drag"))) ||
+                  any;
         return any;
     }
 
@@ -229,7 +240,8 @@ private slots:
         QCOMPARE(accepted, 1000);
         // Every kind of edit took part.
         for (int kind = 0; kind < RandomEditor::kKinds; ++kind)
-            QVERIFY2(editor.acceptedByKind()[size_t(kind)] > 0, qPrintable(QStringLiteral("edit kind %1 never ran").arg(kind)));
+            QVERIFY2(editor.acceptedByKind()[size_t(kind)] > 0,
+                     qPrintable(QStringLiteral("edit kind %1 never ran").arg(kind)));
         QVERIFY(!(document.scene() == loaded));
         const model::Scene edited = document.scene();
 
