@@ -42,6 +42,10 @@ const char* const kSolveUsage =
     "  --visibility MODE       painter (default) or zbuffer\n"
     "  --regions MODE          authored (default), none (one BSP tree) or auto\n"
     "  --report FILE.json      write the JSON report there ('-': standard output)\n"
+    "  --threads N             hemicube render threads, 1..64 (default: every\n"
+    "                          core; the result is the same for any N)\n"
+    "  --cache-mb N            memory for kept form-factor rows, which later shots\n"
+    "                          of a patch reuse (default 256; 0: render every shot)\n"
     "\n"
     "Adaptive subdivision of the element mesh (paper section 5.7):\n"
     "  --adaptive on|off       refine the mesh between shots where neighbouring\n"
@@ -150,7 +154,8 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
         } else if (arg == "--hemicube" || arg == "--iterations" || arg == "--convergence" || arg == "--visibility" ||
                    arg == "--regions" || arg == "--report" || arg == "--out" || arg == "--image" || arg == "--size" ||
                    arg == "--exposure" || arg == "--gamma" || arg == "--false-colour" || arg == "--adaptive" ||
-                   arg == "--threshold" || arg == "--min-edge" || arg == "--anchoring") {
+                   arg == "--threshold" || arg == "--min-edge" || arg == "--anchoring" || arg == "--threads" ||
+                   arg == "--cache-mb") {
             if (i + 1 >= argc)
                 return usageError(arg + " needs a value");
             value = argv[++i];
@@ -176,6 +181,16 @@ std::optional<int> parseOptions(int argc, char** argv, Options& options)
                 return usageError("--convergence expects a number from 0 to 1, not '" + value + "'");
             options.solver.convergence = x;
             options.convergenceGiven = true;
+        } else if (arg == "--threads") {
+            int n = 0;
+            if (!parseNumber(value, n) || n < 1 || n > 64)
+                return usageError("--threads expects an integer from 1 to 64, not '" + value + "'");
+            options.solver.threads = n;
+        } else if (arg == "--cache-mb") {
+            long long mb = 0;
+            if (!parseNumber(value, mb) || mb < 0 || mb > (1LL << 24))
+                return usageError("--cache-mb expects megabytes from 0 to 16777216, not '" + value + "'");
+            options.solver.formFactorCacheBytes = static_cast<std::size_t>(mb) << 20;
         } else if (arg == "--visibility") {
             options.solver.visibility = model::parseVisibility(value);
             if (!options.solver.visibility)

@@ -29,6 +29,10 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     report["maxIterations"] = settings.maxIterations;
     report["convergence"] = settings.convergence;
     report["iterations"] = stats.iterations;
+    // Shots that rendered a hemicube (the others reused the kept form factors
+    // of an earlier shot of the same patch) and the threads that rendered them.
+    report["renderedShots"] = stats.renderedShots;
+    report["threads"] = solver.shooting().threads();
     report["stop"] = stopReasonName(stats.stop);
     report["unshotRatio"] = stats.unshotRatio;
     report["patches"] = stats.patches;

@@ -7,6 +7,7 @@
 #   scripts/dev.sh run [SCENE.json] [editor args...]   build, open the editor
 #   scripts/dev.sh test [ctest args...]                 build, run every test
 #   scripts/dev.sh build                                build only
+#   scripts/dev.sh bench [benchmark args...]            Release build, every benchmark
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -76,8 +77,24 @@ case "$command" in
     install_missing
     configure_and_build
     ;;
+  bench)
+    # The release preset (CMakePresets.json): Release, benchmarks only. The
+    # figures go to build-release/bench/, with the plot of a shot's cost
+    # (docs/performance.md says what each benchmark measures).
+    packages+=(gnuplot-nox) # the plot
+    install_missing
+    (cd "$root" && cmake --preset release >/dev/null && cmake --build --preset release)
+    out="$root/build-release/bench"
+    mkdir -p "$out"
+    for bench in table1_bench adaptive_bench speed_bench; do
+      "$root/build-release/tests/bench/$bench" --benchmark_out="$out/$bench.json" --benchmark_out_format=json "$@" \
+        | tee "$out/$bench.txt"
+    done
+    python3 "$root/scripts/plot_speed.py" "$out/speed_bench.json" "$out/shot-cost.png" \
+      && echo "regio: plot in $out/shot-cost.png" >&2
+    ;;
   *)
-    echo "usage: scripts/dev.sh run [SCENE.json] [editor args...] | test [ctest args...] | build" >&2
+    echo "usage: scripts/dev.sh run [SCENE.json] [editor args...] | test [ctest args...] | build | bench [args...]" >&2
     exit 2
     ;;
 esac

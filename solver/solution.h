@@ -20,6 +20,7 @@ const char* stopReasonName(StopReason reason);
 
 struct SolverStats {
     int iterations = 0;
+    int renderedShots = 0; // shots that rendered a hemicube; the others reused a kept row
     int patches = 0;
     int elements = 0;       // active elements the shooter works on
     int adaptiveRounds = 0; // §5.7 refinement rounds that split elements

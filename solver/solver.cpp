@@ -64,7 +64,8 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     solver->m_prepared = std::move(*prepared);
     if (s.adaptive.enabled)
         solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
-    solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility);
+    solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility,
+                                                    ShootingOptions{options.threads, options.formFactorCacheBytes});
     solver->m_mesh = makeMesh(solver->m_prepared, 0);
     solver->m_stats.preprocessSeconds = secondsSince(start);
     {
@@ -79,6 +80,7 @@ Solver::~Solver() = default;
 void Solver::updateStatsLocked()
 {
     m_stats.iterations = m_shooting->iterations();
+    m_stats.renderedShots = m_shooting->renderedShots();
     m_stats.patches = static_cast<int>(m_prepared.patches.size());
     m_stats.elements = static_cast<int>(m_prepared.elements.size());
     m_stats.energy = m_shooting->energy();

@@ -32,9 +32,12 @@
 namespace regio::solver {
 
 // How to solve: overrides of the scene's own settings (solver/settings.h),
-// and the patch-count threshold of automatic regions.
+// the patch-count threshold of automatic regions, and how the shots run
+// (threads, kept form-factor rows: shooting.h), which changes no result.
 struct SolverOptions : SettingsOverrides {
     int autoRegionPatchThreshold = kAutoRegionPatchThreshold;
+    int threads = 0; // hemicube render threads; 0 = every core
+    std::size_t formFactorCacheBytes = kDefaultFormFactorCacheBytes;
 };
 
 class Solver {

@@ -8,12 +8,15 @@ namespace regio::solver {
 
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
-Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode)
+Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode,
+                   const ShootingOptions& options)
     : m_scene(scene)
     , m_hemicube(hemicubeResolution)
-    , m_visibility(scene, m_hemicube, mode)
-    , m_buffer(m_visibility.makeBuffer())
+    , m_renderer(scene, m_hemicube, mode, options.threads)
+    , m_buffer(m_renderer.makeBuffer())
+    , m_cacheBudget(options.formFactorCacheBytes)
 {
+    dropRows();
     const size_t elements = scene.elements.size();
     m_radiosity.assign(elements, Rgb{0.0});
     m_unshot.assign(elements, Rgb{0.0});
@@ -48,22 +51,59 @@ int Shooting::selectShooter() const
     return best;
 }
 
+void Shooting::dropRows()
+{
+    m_rows.assign(m_scene.patches.size(), FormFactorRow{});
+    m_kept.assign(m_scene.patches.size(), 0);
+    m_cacheBytes = 0;
+    m_lastRow = nullptr;
+}
+
+const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bool>* cancel)
+{
+    const auto p = static_cast<size_t>(shooter);
+    if (m_kept[p])
+        return &m_rows[p];
+
+    if (!m_renderer.render(shooterFrameOfPatch(m_scene, shooter), m_buffer, cancel))
+        return nullptr;
+    ++m_renderedShots;
+    const size_t elements = m_scene.elements.size();
+    m_perItem.assign(elements + kFirstElementItem, 0.0);
+    m_buffer.accumulate(m_hemicube, m_perItem);
+
+    FormFactorRow& row = m_scratch;
+    row.elements.clear();
+    row.factors.clear();
+    for (size_t j = 0; j < elements; ++j)
+        if (const double f = m_perItem[j + kFirstElementItem]; f != 0.0) {
+            row.elements.push_back(static_cast<std::uint32_t>(j));
+            row.factors.push_back(f);
+        }
+    row.escaped = m_perItem[kEmptyItem];
+    row.blocked = m_perItem[kBlockerItem];
+    const std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double));
+    if (m_cacheBudget == 0 || m_cacheBytes + exact > m_cacheBudget)
+        return &row;
+    FormFactorRow& kept = m_rows[p];
+    kept.elements.assign(row.elements.begin(), row.elements.end()); // exact capacity
+    kept.factors.assign(row.factors.begin(), row.factors.end());
+    kept.escaped = row.escaped;
+    kept.blocked = row.blocked;
+    m_cacheBytes += kept.bytes();
+    m_kept[p] = 1;
+    return &kept;
+}
+
 ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLock)
 {
     const int shooter = selectShooter();
     if (shooter < 0)
         return ShotResult::NothingToShoot;
-    const Patch& patch = m_scene.patches[static_cast<size_t>(shooter)];
-    const Properties& props = m_scene.properties[static_cast<size_t>(patch.properties)];
-    const Vec3& a = m_scene.vertices[static_cast<size_t>(patch.vertices[0])];
-    const Vec3& b = m_scene.vertices[static_cast<size_t>(patch.vertices[1])];
-    const ShooterFrame frame = ShooterFrame::make(patch.centroid, props.plane.normal, b - a);
-
-    if (!m_visibility.render(frame, m_buffer, cancel))
+    const FormFactorRow* row = rowOf(shooter, cancel);
+    if (!row)
         return ShotResult::Cancelled;
-    const size_t elements = m_scene.elements.size();
-    m_perItem.assign(elements + kFirstElementItem, 0.0);
-    m_buffer.accumulate(m_hemicube, m_perItem);
+    const Patch& patch = m_scene.patches[static_cast<size_t>(shooter)];
 
     std::unique_lock<std::mutex> lock;
     if (applyLock)
@@ -77,13 +117,10 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     }
     m_patchPower[static_cast<size_t>(shooter)] = Rgb{0.0};
 
-    m_lastFormFactors.assign(elements, 0.0);
     Rgb received{0.0};
-    for (size_t j = 0; j < elements; ++j) {
-        const double f = m_perItem[j + kFirstElementItem];
-        if (f == 0.0)
-            continue;
-        m_lastFormFactors[j] = f;
+    for (size_t k = 0; k < row->elements.size(); ++k) {
+        const size_t j = row->elements[k];
+        const double f = row->factors[k];
         const Element& el = m_scene.elements[j];
         const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
         const Rgb incident = power * f; // W arriving on element j
@@ -97,10 +134,18 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     }
     m_escaped += power - received;
     m_lastShooter = shooter;
-    m_lastEmpty = m_perItem[kEmptyItem];
-    m_lastBlocked = m_perItem[kBlockerItem];
+    m_lastRow = row;
     ++m_iterations;
     return ShotResult::Shot;
+}
+
+std::vector<double> Shooting::lastFormFactors() const
+{
+    std::vector<double> f(m_scene.elements.size(), 0.0);
+    if (m_lastRow)
+        for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
+            f[m_lastRow->elements[k]] = m_lastRow->factors[k];
+    return f;
 }
 
 EnergyBalance Shooting::energy() const
@@ -126,6 +171,7 @@ double Shooting::unshotRatio(const EnergyBalance& books) const
 
 void Shooting::replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot)
 {
+    dropRows(); // the element and patch numbering changed
     m_radiosity = std::move(radiosity);
     m_unshot = std::move(unshot);
     m_patchPower.assign(m_scene.patches.size(), Rgb{0.0});

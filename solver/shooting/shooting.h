@@ -14,13 +14,23 @@
 // (1 - rho_j) P_i F_ij, what it reflects back into the unshot pool, rho_j P_i
 // F_ij, and what lands on no receiver, P_i (1 - sum_j F_ij): the sky of an open
 // scene and the backs of surfaces.
+//
+// A patch is shot many times in a long solve (its unshot power comes back
+// with every shot that reaches it), and its view never changes on a fixed
+// mesh. So the form factors of its first shot, a sparse row (the elements it
+// sees and F_ij of each), are kept within a memory budget and a later shot of
+// the same patch reuses them instead of rendering the hemicube again: the
+// same numbers, so the same result to the last bit. The rows are dropped when
+// the mesh changes (adaptive subdivision).
 #include "solver/prepare/prepared_scene.h"
 #include "solver/shooting/energy_balance.h"
 #include "solver/visibility/hemicube.h"
+#include "solver/visibility/hemicube_renderer.h"
 #include "solver/visibility/item_buffer.h"
-#include "solver/visibility/visibility.h"
 
 #include <atomic>
+#include <cstddef>
+#include <cstdint>
 #include <mutex>
 #include <vector>
 
@@ -28,11 +38,21 @@ namespace regio::solver {
 
 enum class ShotResult { Shot, NothingToShoot, Cancelled };
 
+// How much memory the kept form-factor rows may take by default.
+inline constexpr std::size_t kDefaultFormFactorCacheBytes = std::size_t{256} << 20;
+
+// How a Shooting runs (none of it changes a result).
+struct ShootingOptions {
+    int threads = 0; // hemicube render threads (HemicubeRenderer); 0 = every core
+    std::size_t formFactorCacheBytes = kDefaultFormFactorCacheBytes; // 0 = render every shot
+};
+
 class Shooting {
 public:
     // Keeps a reference to `scene`, which must outlive it; starts with every
     // element's radiosity and unshot radiosity at its emission.
-    Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode);
+    Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode,
+             const ShootingOptions& options = {});
 
     // One shot of the patch with the most unshot power. The hemicube is
     // rendered without any lock; `applyLock`, when given, is held only while
@@ -69,18 +89,46 @@ public:
     // Form factors of the last shot from its shooter to every element (F_ij),
     // and what it lost: the fractions that hit nothing and back faces.
     int lastShooter() const { return m_lastShooter; }
-    const std::vector<double>& lastFormFactors() const { return m_lastFormFactors; }
-    double lastEscapedFraction() const { return m_lastEmpty; }
-    double lastBlockedFraction() const { return m_lastBlocked; }
+    std::vector<double> lastFormFactors() const;
+    double lastEscapedFraction() const { return m_lastRow ? m_lastRow->escaped : 0.0; }
+    double lastBlockedFraction() const { return m_lastRow ? m_lastRow->blocked : 0.0; }
 
-    const Visibility& visibility() const { return m_visibility; }
+    // Shots that rendered a hemicube and shots that reused a kept row.
+    int renderedShots() const { return m_renderedShots; }
+    int reusedShots() const { return m_iterations - m_renderedShots; }
+    std::size_t formFactorCacheBytes() const { return m_cacheBytes; }
+    int threads() const { return m_renderer.threads(); }
+    const VisibilityStats& visibilityStats() const { return m_renderer.stats(); }
     int hemicubeResolution() const { return m_hemicube.resolution(); }
 
 private:
+    // A shooter's form factors: the elements it reaches, ascending, with F_ij.
+    struct FormFactorRow {
+        std::vector<std::uint32_t> elements;
+        std::vector<double> factors;
+        double escaped = 0.0;
+        double blocked = 0.0;
+        std::size_t bytes() const
+        {
+            return elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double);
+        }
+    };
+    // The row of `shooter`: kept, or rendered now (and kept if it fits).
+    // Null when cancelled.
+    const FormFactorRow* rowOf(int shooter, const std::atomic<bool>* cancel);
+    void dropRows();
+
     const PreparedScene& m_scene;
     Hemicube m_hemicube;
-    Visibility m_visibility;
+    HemicubeRenderer m_renderer;
     ItemBuffer m_buffer;
+    std::size_t m_cacheBudget = 0;
+    std::size_t m_cacheBytes = 0;
+    std::vector<FormFactorRow> m_rows; // per patch; kept when m_kept[p]
+    std::vector<char> m_kept;
+    FormFactorRow m_scratch; // a row that did not fit the budget
+    const FormFactorRow* m_lastRow = nullptr;
+    int m_renderedShots = 0;
 
     std::vector<Rgb> m_radiosity;  // per element, W/m^2
     std::vector<Rgb> m_unshot;     // per element, W/m^2
@@ -95,9 +143,6 @@ private:
     int m_iterations = 0;
 
     int m_lastShooter = -1;
-    std::vector<double> m_lastFormFactors;
-    double m_lastEmpty = 0.0;
-    double m_lastBlocked = 0.0;
 };
 
 } // namespace regio::solver

@@ -2,15 +2,6 @@
 
 namespace regio::solver {
 
-ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
-{
-    const Patch& p = scene.patches[static_cast<size_t>(patch)];
-    const Properties& props = scene.properties[static_cast<size_t>(p.properties)];
-    const Vec3& a = scene.vertices[static_cast<size_t>(p.vertices[0])];
-    const Vec3& b = scene.vertices[static_cast<size_t>(p.vertices[1])];
-    return ShooterFrame::make(p.centroid, props.plane.normal, b - a);
-}
-
 std::optional<HemicubeView> renderHemicubeView(const PreparedScene& scene, int patch, int resolution,
                                                model::Visibility mode)
 {

@@ -15,10 +15,6 @@
 
 namespace regio::solver {
 
-// The frame a shot of `patch` places its hemicube in (the patch centroid, its
-// face's normal, its first edge as the u axis): the one Shooting uses.
-ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch);
-
 struct HemicubeView {
     int patch = -1;
     Hemicube hemicube{2};

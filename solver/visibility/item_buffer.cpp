@@ -14,10 +14,17 @@ ItemBuffer::ItemBuffer(const Hemicube& hemicube, bool withDepth)
         m_depth.assign(m_ids.size(), 0.0f);
 }
 
-void ItemBuffer::clear()
+void ItemBuffer::clear(std::uint32_t faces)
 {
-    std::fill(m_ids.begin(), m_ids.end(), kEmptyItem);
-    std::fill(m_depth.begin(), m_depth.end(), 0.0f);
+    for (int f = 0; f < kHemicubeFaceCount; ++f) {
+        if (!(faces & (1u << f)))
+            continue;
+        const auto begin = static_cast<std::ptrdiff_t>(m_offset[f]);
+        const auto end = begin + static_cast<std::ptrdiff_t>(m_n) * (f == 0 ? m_n : m_n / 2);
+        std::fill(m_ids.begin() + begin, m_ids.begin() + end, kEmptyItem);
+        if (!m_depth.empty())
+            std::fill(m_depth.begin() + begin, m_depth.begin() + end, 0.0f);
+    }
 }
 
 namespace {

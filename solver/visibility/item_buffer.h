@@ -29,8 +29,9 @@ public:
     int resolution() const { return m_n; }
     bool hasDepth() const { return !m_depth.empty(); }
 
-    // Resets every pixel to kEmptyItem (and depth to "infinitely far").
-    void clear();
+    // Resets every pixel of the faces in `faces` (bit f = face f; all five
+    // by default) to kEmptyItem, and their depth to "infinitely far".
+    void clear(std::uint32_t faces = 0x1Fu);
 
     ItemId* face(HemicubeFace f) { return m_ids.data() + m_offset[static_cast<int>(f)]; }
     const ItemId* face(HemicubeFace f) const { return m_ids.data() + m_offset[static_cast<int>(f)]; }

@@ -50,12 +50,7 @@ PainterOrder painterOrder(const PreparedScene& scene, const Vec3& eye, const Pla
 
 PainterOrder painterOrderFromPatch(const PreparedScene& scene, int patch)
 {
-    // The shooter's frame and plane as Shooting::shoot and Visibility build them.
-    const Patch& p = scene.patches[size_t(patch)];
-    const Vec3& a = scene.vertices[size_t(p.vertices[0])];
-    const Vec3& b = scene.vertices[size_t(p.vertices[1])];
-    const ShooterFrame frame =
-        ShooterFrame::make(p.centroid, scene.properties[size_t(p.properties)].plane.normal, b - a);
+    const ShooterFrame frame = shooterFrameOfPatch(scene, patch);
     return painterOrder(scene, frame.origin, Plane::fromPointNormal(frame.origin, frame.n));
 }
 

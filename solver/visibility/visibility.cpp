@@ -16,12 +16,27 @@ namespace {
 constexpr int kCancelCheckInterval = 256;
 } // namespace
 
-Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode)
+ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
+{
+    const Patch& p = scene.patches[static_cast<size_t>(patch)];
+    const Properties& props = scene.properties[static_cast<size_t>(p.properties)];
+    const Vec3& a = scene.vertices[static_cast<size_t>(p.vertices[0])];
+    const Vec3& b = scene.vertices[static_cast<size_t>(p.vertices[1])];
+    return ShooterFrame::make(p.centroid, props.plane.normal, b - a);
+}
+
+Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode,
+                       HemicubeFaceSet faces)
     : m_scene(scene)
     , m_hemicube(hemicube)
     , m_mode(mode)
+    , m_faces(faces & kAllHemicubeFaces)
+    , m_countsStats((faces & faceBit(HemicubeFace::Top)) != 0)
     , m_raster(hemicube)
 {
+    for (int f = 0; f < kHemicubeFaceCount; ++f)
+        if (!(m_faces & (1u << f)))
+            m_otherFaceBits |= faceOutcodeBits(f);
 }
 
 ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == model::Visibility::ZBuffer); }
@@ -57,8 +72,9 @@ inline void Visibility::touch(int vertex)
     // Project once per shooter onto the faces whose frustum holds the vertex
     // (one, or two on a border): elements inside a face then skip projection.
     FixedVertex* projected = &m_projected[v * kHemicubeFaceCount];
+    // (Only onto this visibility's own faces.)
     for (int f = 0; f < kHemicubeFaceCount; ++f)
-        if (!(code & faceOutcodeBits(f)))
+        if ((m_faces & (1u << f)) && !(code & faceOutcodeBits(f)))
             projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
 }
 
@@ -70,25 +86,27 @@ bool Visibility::regionCulled(int region) const
 template <class Paint>
 inline void Visibility::rasterisePiece(int piece, Paint&& paint)
 {
-    ++m_stats.elementsVisited;
+    m_stats.elementsVisited += m_countsStats;
     const Piece& e = m_scene.pieces[static_cast<size_t>(piece)];
     touch(e.vertices[0]);
     touch(e.vertices[1]);
     touch(e.vertices[2]);
     const auto i0 = static_cast<size_t>(e.vertices[0]), i1 = static_cast<size_t>(e.vertices[1]),
                i2 = static_cast<size_t>(e.vertices[2]);
-    const std::uint32_t andCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
+    const std::uint32_t everyCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
     // On or below the shooter's plane, or outside every face (a bit of each
     // face's group is set).
-    bool hidden = (andCode & kBelowBaseBit) != 0;
+    bool hidden = (everyCode & kBelowBaseBit) != 0;
     if (hidden)
         return;
     hidden = true;
     for (int f = 0; f < kHemicubeFaceCount && hidden; ++f)
-        hidden = (andCode & faceOutcodeBits(f)) != 0;
+        hidden = (everyCode & faceOutcodeBits(f)) != 0;
     if (hidden)
         return;
-    ++m_stats.elementsRasterised;
+    m_stats.elementsRasterised += m_countsStats;
+    // Only this visibility's faces from here on.
+    const std::uint32_t andCode = everyCode | m_otherFaceBits;
     const std::uint32_t orCode = m_outcode[i0] | m_outcode[i1] | m_outcode[i2];
     const Vec3* const local[3] = {&m_local[i0], &m_local[i1], &m_local[i2]};
     const FixedVertex* const projected[3] = {&m_projected[i0 * kHemicubeFaceCount],
@@ -157,7 +175,7 @@ void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
 bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
 {
     prepareFrame(frame);
-    buffer.clear();
+    buffer.clear(m_faces);
     int sinceCheck = 0;
     bool cancelled = false;
     auto shouldStop = [&](int elements) {
@@ -174,7 +192,7 @@ bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std
             m_scene, frame.origin,
             [&](int region) {
                 const bool culled = cancelled || regionCulled(region);
-                m_stats.regionsCulled += culled && !cancelled;
+                m_stats.regionsCulled += culled && !cancelled && m_countsStats;
                 return !culled;
             },
             [&](int nodeIndex, bool eyeInFront) {
@@ -197,7 +215,7 @@ bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std
     culled.resize(m_scene.regions.size());
     for (size_t r = 0; r < culled.size(); ++r) {
         culled[r] = regionCulled(static_cast<int>(r));
-        m_stats.regionsCulled += culled[r];
+        m_stats.regionsCulled += culled[r] && m_countsStats;
     }
     for (const BspNode& node : m_scene.nodes) {
         if (node.region >= 0 && culled[static_cast<size_t>(node.region)])

@@ -22,6 +22,11 @@
 // Both share one per-shooter vertex cache: each vertex is transformed into the
 // shooter's frame and outcoded once per shooter, whatever number of elements
 // share it (docs/performance.md).
+//
+// A Visibility may own only some of the five faces (a face set): it walks the
+// same order, paints only its own faces and leaves the others' pixels alone,
+// so several of them fill one item buffer side by side on several threads
+// (solver/visibility/hemicube_renderer.h) with the pixels one would paint.
 #include "model/scene.h"
 #include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/hemicube.h"
@@ -55,6 +60,16 @@ inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
     }
 }
 
+// A set of hemicube faces: bit f is face f.
+using HemicubeFaceSet = std::uint32_t;
+inline constexpr HemicubeFaceSet kAllHemicubeFaces = (1u << kHemicubeFaceCount) - 1;
+inline constexpr HemicubeFaceSet faceBit(HemicubeFace f) { return 1u << static_cast<int>(f); }
+
+// The hemicube frame of a shooting patch (§5.6): at its centroid, on its
+// plane, turned by its first edge. Every shot, view and order of a patch
+// uses this one frame.
+ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch);
+
 struct VisibilityStats {
     std::int64_t regionsCulled = 0; // whole regions skipped (behind the shooter plane)
     // Counted per painted piece triangle (solver/prepare/pieces.h); most elements are
@@ -67,15 +82,19 @@ class Visibility {
 public:
     // Keeps a reference to `scene` and `hemicube`; both must outlive it. The
     // scene may grow (adaptive subdivision): caches follow its vertex count.
-    Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode);
+    // It paints the faces of `faces` only; the statistics are counted by the
+    // Visibility that owns the top face (each piece once, whatever the split).
+    Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode,
+               HemicubeFaceSet faces = kAllHemicubeFaces);
 
     model::Visibility mode() const { return m_mode; }
     // The item buffer this visibility writes; it has a depth plane in z-buffer mode.
     ItemBuffer makeBuffer() const;
 
     // Renders the view of a shooter sitting on the plane `frame.n` through
-    // `frame.origin`. When `cancel` becomes true the render stops early and
-    // returns false (the buffer is then incomplete).
+    // `frame.origin` into this visibility's faces of `buffer` (cleared first;
+    // the other faces are not touched). When `cancel` becomes true the render
+    // stops early and returns false (the buffer is then incomplete).
     bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr);
 
     const VisibilityStats& stats() const { return m_stats; }
@@ -92,6 +111,11 @@ private:
     const PreparedScene& m_scene;
     const Hemicube& m_hemicube;
     model::Visibility m_mode;
+    HemicubeFaceSet m_faces;
+    // Outcode bits of the faces this visibility does not paint: OR-ed into a
+    // piece's AND code, they make those faces look wholly outside.
+    std::uint32_t m_otherFaceBits = 0;
+    bool m_countsStats = true;
     HemicubeRaster m_raster;
     ShooterFrame m_frame;
     Plane m_shooterPlane;

@@ -262,6 +262,9 @@ TEST(SolveCommand, BadOptionsAreUsageErrorsThatExitTwo)
                                                {"--convergence", "nan", scene},
                                                {"--visibility", "raytrace", scene},
                                                {"--regions", "some", scene},
+                                               {"--threads", "0", scene},
+                                               {"--threads", "two", scene},
+                                               {"--cache-mb", "-1", scene},
                                                {"--report"},
                                                {"--frobnicate", scene},
                                                {}}) {
@@ -275,9 +278,37 @@ TEST(SolveCommand, HelpDescribesEveryOption)
 {
     const CommandRun run = solve({"--help"});
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions", "--adaptive",
-                               "--threshold", "--min-edge", "--anchoring", "--report", "--quiet"})
+    for (const char* option :
+         {"--hemicube", "--iterations", "--convergence", "--visibility", "--regions", "--adaptive", "--threshold",
+          "--min-edge", "--anchoring", "--report", "--quiet", "--threads", "--cache-mb"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
+}
+
+TEST(SolveCommand, ThreadsAndKeptFormFactorsChangeNoNumberOfTheReport)
+{
+    Scratch scratch;
+    const std::string scene = samplePath("cornell-box").string();
+    auto report = [&](const std::vector<std::string>& how, const std::string& name) {
+        std::vector<std::string> args{"--iterations", "400", "--hemicube", "64", "--adaptive", "off", "--quiet"};
+        args.insert(args.end(), how.begin(), how.end());
+        args.insert(args.end(), {"--report", (scratch / name).string(), scene});
+        const CommandRun run = solve(args);
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        json r = json::parse(readText(scratch / name));
+        r.erase("seconds");
+        return r;
+    };
+    json plain = report({"--threads", "1", "--cache-mb", "0"}, "plain.json");
+    json fast = report({"--threads", "3", "--cache-mb", "64"}, "fast.json");
+    EXPECT_EQ(plain["threads"], 1);
+    EXPECT_EQ(fast["threads"], 3);
+    EXPECT_EQ(plain["renderedShots"], 400);
+    EXPECT_LT(fast["renderedShots"].get<int>(), 400);
+    for (json* r : {&plain, &fast}) {
+        r->erase("threads");
+        r->erase("renderedShots");
+    }
+    EXPECT_EQ(plain, fast);
 }
 
 TEST(SolveCommand, InterruptStopsTheSolveAndStillWritesTheReport)

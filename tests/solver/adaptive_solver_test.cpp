@@ -317,9 +317,15 @@ TEST(AdaptiveSolver, ASolveCancelledAgainAndAgainEndsWhereAnUninterruptedOneDoes
     });
     int cancelled = 0;
     StopReason stop = StopReason::Cancelled;
-    for (int call = 0; call < 200000 && stop == StopReason::Cancelled; ++call) {
+    // Bounded by time, not by calls: while the toggler is not scheduled (the
+    // hemicube's render threads share the cores) the flag stays set and every
+    // call returns at once.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (stop == StopReason::Cancelled && std::chrono::steady_clock::now() < deadline) {
         stop = (*interrupted)->run({}, cancel);
         cancelled += stop == StopReason::Cancelled ? 1 : 0;
+        if (stop == StopReason::Cancelled)
+            std::this_thread::yield();
     }
     done = true;
     toggler.join();

@@ -132,11 +132,12 @@ TEST(Shooting, ReceiversGainReflectanceTimesShotRadiosityTimesFormFactorTimesAre
     const Rgb shotRadiosity = p.properties[static_cast<size_t>(patch.properties)].emission;
     solver->step(1);
     ASSERT_EQ(s.lastShooter(), shooter);
+    const std::vector<double> factors = s.lastFormFactors();
     int receivers = 0;
     for (size_t j = 0; j < p.elements.size(); ++j) {
         const Element& e = p.elements[j];
         const Properties& props = p.properties[static_cast<size_t>(e.properties)];
-        const double f = s.lastFormFactors()[j];
+        const double f = factors[j];
         receivers += f > 0.0;
         const Rgb expected = props.reflectance * shotRadiosity * f * patch.area / e.area;
         const Rgb gained = s.radiosity()[j] - props.emission;

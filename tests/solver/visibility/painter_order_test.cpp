@@ -51,13 +51,6 @@ std::vector<int> shooterSample(const PreparedScene& s, int count)
     return out;
 }
 
-ShooterFrame frameOf(const PreparedScene& s, int patch)
-{
-    const Patch& p = s.patches[size_t(patch)];
-    return ShooterFrame::make(p.centroid, s.properties[size_t(p.properties)].plane.normal,
-                              s.vertices[size_t(p.vertices[1])] - s.vertices[size_t(p.vertices[0])]);
-}
-
 // The playback painted with the solver's rasteriser, element after element.
 ItemBuffer paintPlayback(const PreparedScene& s, const Hemicube& hemicube, const ShooterFrame& frame,
                          const PainterOrder& order)
@@ -90,7 +83,7 @@ TEST(PainterOrder, WalksTheNodesInTheOrderOfTheSolversTraversal)
     for (RegionsMode mode : {RegionsMode::Authored, RegionsMode::None, RegionsMode::Auto}) {
         const PreparedScene s = preparedSample(mode);
         for (int patch : shooterSample(s, 40)) {
-            const ShooterFrame frame = frameOf(s, patch);
+            const ShooterFrame frame = shooterFrameOfPatch(s, patch);
             const Plane plane = Plane::fromPointNormal(frame.origin, frame.n);
             std::vector<int> expected;
             backToFrontNodes(s, frame.origin, &plane, expected);
@@ -108,7 +101,7 @@ TEST(PainterOrder, PaintsTheSamePiecesAndCullsTheSameRegionsAsThePainter)
     for (int patch : shooterSample(s, 40)) {
         Visibility painter(s, hemicube, model::Visibility::Painter);
         ItemBuffer buffer = painter.makeBuffer();
-        ASSERT_TRUE(painter.render(frameOf(s, patch), buffer));
+        ASSERT_TRUE(painter.render(shooterFrameOfPatch(s, patch), buffer));
         const PainterOrder order = painterOrderFromPatch(s, patch);
         std::int64_t pieces = 0;
         for (const PaintStep& step : order.steps)
@@ -124,7 +117,7 @@ TEST(PainterOrder, RepaintedWithTheSolversRasteriserGivesThePaintersItemBuffer)
     const Hemicube hemicube(100);
     int compared = 0, reversedDiffers = 0;
     for (int patch : shooterSample(s, 25)) {
-        const ShooterFrame frame = frameOf(s, patch);
+        const ShooterFrame frame = shooterFrameOfPatch(s, patch);
         Visibility painter(s, hemicube, model::Visibility::Painter);
         ItemBuffer expected = painter.makeBuffer();
         ASSERT_TRUE(painter.render(frame, expected));
@@ -202,7 +195,7 @@ TEST(PainterOrder, LeavesOutTheRegionsBehindTheShooter)
         if (order.culledRegions.empty())
             continue;
         ++shootersWithCulling;
-        const ShooterFrame frame = frameOf(s, patch);
+        const ShooterFrame frame = shooterFrameOfPatch(s, patch);
         const Plane plane = Plane::fromPointNormal(frame.origin, frame.n);
         for (int r : order.culledRegions)
             EXPECT_TRUE(boxBehindPlane(s.regions[size_t(r)].bounds, plane));

@@ -25,13 +25,6 @@ PreparedScene prepare(const model::Scene& scene, RegionsMode mode = RegionsMode:
     return r.ok() ? std::move(*r) : PreparedScene{};
 }
 
-ShooterFrame frameOfPatch(const PreparedScene& p, const Patch& patch)
-{
-    const Vec3 edge =
-        p.vertices[static_cast<size_t>(patch.vertices[1])] - p.vertices[static_cast<size_t>(patch.vertices[0])];
-    return ShooterFrame::make(patch.centroid, p.properties[static_cast<size_t>(patch.properties)].plane.normal, edge);
-}
-
 // True if the 3 x 3 neighbourhood of (x, y) in `b` holds more than one id.
 bool edgePixel(const ItemBuffer& b, HemicubeFace f, int x, int y)
 {
@@ -87,7 +80,7 @@ TEST(Visibility, AFullHemicubeInsideAClosedRoomSumsToOnePerShooter)
         ItemBuffer buffer = vis.makeBuffer();
         std::vector<double> perItem;
         for (size_t i = 0; i < p.patches.size(); i += 7) {
-            ASSERT_TRUE(vis.render(frameOfPatch(p, p.patches[i]), buffer));
+            ASSERT_TRUE(vis.render(shooterFrameOfPatch(p, static_cast<int>(i)), buffer));
             perItem.assign(p.elements.size() + kFirstElementItem, 0.0);
             buffer.accumulate(h, perItem);
             double receivers = 0.0;
@@ -118,7 +111,7 @@ TEST(Visibility, PainterItemBuffersEqualZBufferItemBuffersExceptOnEdgePixels)
         ItemBuffer a = painter.makeBuffer(), b = zbuffer.makeBuffer();
         Comparison total;
         for (size_t i = 0; i < p.patches.size(); i += 11) {
-            const ShooterFrame frame = frameOfPatch(p, p.patches[i]);
+            const ShooterFrame frame = shooterFrameOfPatch(p, static_cast<int>(i));
             painter.render(frame, a);
             zbuffer.render(frame, b);
             const Comparison c = compare(a, b);
@@ -169,7 +162,7 @@ TEST(Visibility, RegionsBehindTheShooterPlaneAreCulledWhole)
         return p.faces[static_cast<size_t>(patch.properties)].id == "box00.body.nx";
     });
     ASSERT_NE(it, p.patches.end());
-    painter.render(frameOfPatch(p, *it), buffer);
+    painter.render(shooterFrameOfPatch(p, static_cast<int>(it - p.patches.begin())), buffer);
     EXPECT_GE(painter.stats().regionsCulled, 1);
 }
 
@@ -190,7 +183,7 @@ TEST(Visibility, BackFacingElementsArePaintedAsBlockers)
             return p.faces[static_cast<size_t>(patch.properties)].id == "floor.face";
         });
         ASSERT_NE(it, p.patches.end());
-        vis.render(frameOfPatch(p, *it), buffer);
+        vis.render(shooterFrameOfPatch(p, static_cast<int>(it - p.patches.begin())), buffer);
         std::set<ItemId> seen(buffer.all().begin(), buffer.all().end());
         EXPECT_EQ(seen, std::set<ItemId>{kBlockerItem}) << model::visibilityName(mode);
     }
@@ -205,7 +198,7 @@ TEST(Visibility, ACancelledRenderStopsEarly)
         Visibility vis(p, h, mode);
         ItemBuffer buffer = vis.makeBuffer();
         std::atomic<bool> cancel{true};
-        EXPECT_FALSE(vis.render(frameOfPatch(p, p.patches[0]), buffer, &cancel));
+        EXPECT_FALSE(vis.render(shooterFrameOfPatch(p, 0), buffer, &cancel));
         EXPECT_LT(vis.stats().elementsVisited, static_cast<std::int64_t>(p.elements.size()));
     }
 }

@@ -1,0 +1,131 @@
+// How shots run changes no result: a shot that reuses the kept form factors
+// of its patch's earlier shot, and a hemicube rendered on several threads,
+// give the radiosity and the energy books of rendering every shot on one
+// thread, to the last bit.
+#include "solver/solver.h"
+#include "support/sample_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace regio;
+using namespace regio::solver;
+
+namespace {
+
+struct SolveOutcome {
+    std::vector<Rgb> radiosity;
+    EnergyBalance energy;
+    int iterations = 0;
+    int renderedShots = 0;
+    int distinctShooters = 0;
+    std::size_t cacheBytes = 0;
+    int elements = 0;
+};
+
+SolveOutcome solve(const std::string& sample, SolverOptions options, int shots)
+{
+    auto built = Solver::create(test::loadSample(sample), options);
+    EXPECT_TRUE(built.ok());
+    SolveOutcome run;
+    if (!built.ok())
+        return run;
+    Solver& solver = **built;
+    std::set<int> shooters;
+    for (int i = 0; i < shots; ++i) {
+        if (solver.step(1) != 1)
+            break;
+        shooters.insert(solver.shooting().lastShooter());
+    }
+    run.radiosity = solver.shooting().radiosity();
+    run.energy = solver.stats().energy;
+    run.iterations = solver.stats().iterations;
+    run.renderedShots = solver.stats().renderedShots;
+    run.distinctShooters = static_cast<int>(shooters.size());
+    run.cacheBytes = solver.shooting().formFactorCacheBytes();
+    run.elements = solver.stats().elements;
+    return run;
+}
+
+void expectSameResult(const SolveOutcome& a, const SolveOutcome& b)
+{
+    ASSERT_EQ(a.iterations, b.iterations);
+    ASSERT_EQ(a.radiosity.size(), b.radiosity.size());
+    for (size_t j = 0; j < a.radiosity.size(); ++j)
+        ASSERT_EQ(a.radiosity[j], b.radiosity[j]) << "element " << j;
+    EXPECT_EQ(a.energy.absorbed, b.energy.absorbed);
+    EXPECT_EQ(a.energy.escaped, b.energy.escaped);
+    EXPECT_EQ(a.energy.unshot, b.energy.unshot);
+}
+
+SolverOptions fixedMesh(int hemicube)
+{
+    SolverOptions o;
+    o.hemicube = hemicube;
+    o.adaptive = false;
+    o.threads = 1;
+    return o;
+}
+
+} // namespace
+
+TEST(ShotReuse, KeptRowsGiveTheResultOfRenderingEveryShot)
+{
+    SolverOptions rendering = fixedMesh(64);
+    rendering.formFactorCacheBytes = 0;
+    const SolveOutcome everyShot = solve("cornell-box", rendering, 1500);
+    const SolveOutcome reusing = solve("cornell-box", fixedMesh(64), 1500);
+    expectSameResult(everyShot, reusing);
+    EXPECT_EQ(everyShot.renderedShots, everyShot.iterations);
+    EXPECT_EQ(everyShot.cacheBytes, 0u);
+    // Each patch rendered once: every later shot of it reused its row.
+    EXPECT_EQ(reusing.renderedShots, reusing.distinctShooters);
+    EXPECT_LT(reusing.renderedShots, reusing.iterations / 2);
+    EXPECT_GT(reusing.cacheBytes, 0u);
+}
+
+TEST(ShotReuse, ABudgetTooSmallForEveryRowKeepsWhatFitsAndTheSameResult)
+{
+    SolverOptions small = fixedMesh(64);
+    small.formFactorCacheBytes = 64 * 1024;
+    const SolveOutcome everyRow = solve("cornell-box", fixedMesh(64), 1500);
+    const SolveOutcome someRows = solve("cornell-box", small, 1500);
+    expectSameResult(everyRow, someRows);
+    EXPECT_LE(someRows.cacheBytes, small.formFactorCacheBytes);
+    EXPECT_GT(someRows.cacheBytes, 0u);
+    EXPECT_GT(someRows.renderedShots, everyRow.renderedShots);
+    EXPECT_LT(someRows.renderedShots, someRows.iterations);
+}
+
+TEST(ShotReuse, RowsAreDroppedWhenAdaptiveSubdivisionChangesTheMesh)
+{
+    // The sample's own settings subdivide (§5.7) in the first few hundred
+    // shots; a smaller hemicube keeps it quick.
+    SolverOptions o;
+    o.hemicube = 48;
+    o.threads = 1;
+    SolverOptions rendering = o;
+    rendering.formFactorCacheBytes = 0;
+    const SolveOutcome everyShot = solve("cornell-box", rendering, 1500);
+    const SolveOutcome reusing = solve("cornell-box", o, 1500);
+    ASSERT_GT(reusing.elements, 552 * 4) << "the mesh was expected to grow";
+    expectSameResult(everyShot, reusing);
+    EXPECT_LT(reusing.renderedShots, reusing.iterations / 2);
+}
+
+TEST(ShotReuse, AnyThreadCountGivesTheResultOfOneThread)
+{
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
+        SolverOptions one = fixedMesh(80);
+        one.visibility = mode;
+        one.formFactorCacheBytes = 0;
+        SolverOptions two = one;
+        two.threads = 2;
+        SolverOptions three = one;
+        three.threads = 3;
+        const SolveOutcome a = solve("two-lights-room", one, 60);
+        expectSameResult(a, solve("two-lights-room", two, 60));
+        expectSameResult(a, solve("two-lights-room", three, 60));
+    }
+}
