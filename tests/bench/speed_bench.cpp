@@ -11,12 +11,13 @@
 //   two_lights/T/C   the two-light sample with its own settings (adaptive on)
 //   furnished/T/C    a generated furnished room (tests/support/furnished_room.h,
 //                    seed 1, 11 objects, automatic regions) meshed to about
-//                    20 000 elements, fixed mesh, hemicube 150
+//                    20 000 elements (the patch size from a coarse mesh's
+//                    count), fixed mesh, hemicube 150
 //
 // T is the hemicube threads (0 = every core), C the form-factor row budget in
 // MiB (0 = render every shot): T=1, C=0 is how the solver ran before either
 // existed. The answer is the same for every T and C (tests/solver/shooting/
-// shot_reuse_test.cpp).
+// shot_reuse_test.cpp). T=1, C=0 runs once (it is slow), the others three times.
 //
 // A shot's cost at scale: a generated warehouse (the furnished-room generator,
 // seed 7, 1000 objects on a 40 m x 40 m floor, automatic regions) meshed to
@@ -100,19 +101,13 @@ const Case& furnished()
         f.options.hemicube = 150;
         f.options.elementsPerPatch = 4;
         f.options.regions = model::RegionsMode::Auto;
-        // The patch size whose mesh comes closest to 20 000 elements (counts
-        // jump with the splits: scanned, not bisected).
-        double bestSize = 0.0;
-        int best = 0;
-        for (double size = 0.08; size < 0.6; size *= 1.02) {
-            f.options.patchSize = size;
-            const int n = elementCount(f.scene, f.options);
-            if (std::abs(n - kFurnishedElements) < std::abs(best - kFurnishedElements)) {
-                best = n;
-                bestSize = size;
-            }
-        }
+        // The element count grows as 1 / patchSize^2: one coarse preparation
+        // gives the patch size, a second the count it makes.
+        f.options.patchSize = 0.5;
+        const int coarse = elementCount(f.scene, f.options);
+        const double bestSize = 0.5 * std::sqrt(double(coarse) / kFurnishedElements);
         f.options.patchSize = bestSize;
+        const int best = elementCount(f.scene, f.options);
         std::printf("furnished room: patch size %.4f m -> %d elements\n", bestSize, best);
         return f;
     }();
@@ -299,11 +294,19 @@ double median(std::vector<double> v)
 
 } // namespace
 
+// T=1, C=0 (how the solver ran before threads and kept rows) once: it is slow.
 #define REGIO_CONVERGE(fn, name)                                                                                       \
     BENCHMARK(fn)                                                                                                      \
         ->Name(name)                                                                                                   \
         ->ArgNames({"threads", "rows_mib"})                                                                            \
         ->Args({1, 0})                                                                                                 \
+        ->Unit(benchmark::kMillisecond)                                                                                \
+        ->UseManualTime()                                                                                              \
+        ->Iterations(1)                                                                                                \
+        ->Repetitions(1);                                                                                              \
+    BENCHMARK(fn)                                                                                                      \
+        ->Name(name)                                                                                                   \
+        ->ArgNames({"threads", "rows_mib"})                                                                            \
         ->Args({0, 0})                                                                                                 \
         ->Args({1, 256})                                                                                               \
         ->Args({0, 256})                                                                                               \
