@@ -5,7 +5,7 @@
 
 Left: milliseconds per shot against the element count (hemicube 300^2,
 automatic regions, every core). Right: against the hemicube resolution
-(100 000 elements). Medians of the repetitions; drawn by gnuplot.
+(about 90 000 elements). Medians of the repetitions; drawn by gnuplot.
 """
 import json
 import statistics
@@ -41,17 +41,17 @@ def main():
         a.write_text("".join(f"{e} {ms}\n" for e, ms in by_elements))
         b.write_text("".join(f"{n} {ms}\n" for n, ms in by_resolution))
         script = f"""
-set terminal pngcairo size 1100,450 font ",10"
+set terminal pngcairo size 1100,450 font ",10" noenhanced
 set output "{sys.argv[2]}"
-set multiplot layout 1,2 title "Regio: milliseconds per hemicube shot (medians, speed\\_bench)"
+set multiplot layout 1,2 title "Regio: milliseconds per hemicube shot (medians, speed_bench)"
 set grid
 set logscale xy
-set xlabel "elements (hemicube 300^2)"
+set xlabel "elements (hemicube 300 x 300)"
 set ylabel "ms per shot"
 plot "{a}" using 1:2 with linespoints pointtype 7 title "automatic regions"
 unset logscale
 set logscale y
-set xlabel "hemicube resolution N (100 000 elements)"
+set xlabel "hemicube resolution N (about 90 000 elements)"
 set xtics (150, 300, 600)
 plot "{b}" using 1:2 with linespoints pointtype 7 title "automatic regions"
 unset multiplot

@@ -20,7 +20,8 @@
 // shot_reuse_test.cpp). T=1, C=0 runs once (it is slow), the others three times.
 //
 // A shot's cost at scale: a generated warehouse (the furnished-room generator,
-// seed 7, 1000 objects on a 40 m x 40 m floor, automatic regions) meshed to
+// seed 7, one object per thousand elements, at least 10, on a floor that grows
+// with them: 1000 objects on 40 m x 40 m; automatic regions) meshed to about
 // 10 000, 100 000 and 1 000 000 elements, fixed mesh, 100 shots:
 //
 //   scale/E/N/T/R    E thousand elements, hemicube N, T threads, R = 1 for
@@ -168,14 +169,24 @@ double peakMegabytes()
     return static_cast<double>(usage.ru_maxrss) / 1024.0; // ru_maxrss is in KiB on Linux
 }
 
-const model::Scene& warehouse()
+// The warehouse for about `elements` elements: one object per thousand
+// elements (at least 10) on a floor that grows with them (1000 objects on
+// 40 m x 40 m), so a scene of a million elements has a thousand objects in
+// many regions, and a small one is not all object faces at their coarsest.
+const model::Scene& warehouse(int elements)
 {
-    static const model::Scene s = test::furnishedRoom(7, 1000, {40.0, 3.0, 40.0});
-    return s;
+    static std::map<int, model::Scene> scenes;
+    auto it = scenes.find(elements);
+    if (it == scenes.end()) {
+        const int objects = std::max(10, elements / 1000);
+        const double side = 40.0 * std::sqrt(objects / 1000.0);
+        it = scenes.emplace(elements, test::furnishedRoom(7, objects, {side, 3.0, side})).first;
+    }
+    return it->second;
 }
 
-// The warehouse meshed to about `elements` elements: the count grows as
-// 1 / patchSize^2, so one coarse preparation gives the patch size.
+// Meshed to about `elements` elements: the count grows as 1 / patchSize^2,
+// so a coarse preparation gives the patch size, and a second corrects it.
 SolverOptions warehouseOptions(int elements, bool regions)
 {
     static std::map<int, double> patchSizes;
@@ -188,8 +199,11 @@ SolverOptions warehouseOptions(int elements, bool regions)
         SolverOptions coarse = o;
         coarse.regions = model::RegionsMode::Auto;
         coarse.patchSize = 1.0;
-        const int n = elementCount(warehouse(), coarse);
-        it = patchSizes.emplace(elements, std::sqrt(double(n) / elements)).first;
+        const int n = elementCount(warehouse(elements), coarse);
+        // Small faces keep their one patch: correct the estimate once.
+        coarse.patchSize = std::sqrt(double(n) / elements);
+        const int m = elementCount(warehouse(elements), coarse);
+        it = patchSizes.emplace(elements, *coarse.patchSize * std::sqrt(double(m) / elements)).first;
     }
     o.patchSize = it->second;
     return o;
@@ -217,7 +231,7 @@ void scale(benchmark::State& state)
     constexpr int kShots = 100;
     ScaleFigures fig;
     for (auto _ : state) {
-        auto built = Solver::create(warehouse(), options);
+        auto built = Solver::create(warehouse(elements), options);
         if (!built.ok()) {
             state.SkipWithError("the scene could not be prepared");
             return;
