@@ -4,10 +4,12 @@
 #include "solver/prepare/partition.h"
 #include "solver/prepare/regional_tree.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
@@ -38,6 +40,29 @@ struct CutKeyHash {
         h ^= (std::uint64_t(std::uint32_t(k.hi)) + 0x7F4A7C15ull + (h << 6) + (h >> 2)) * 0xC2B2AE3D27D4EB4Full;
         h ^= (std::uint64_t(std::uint32_t(k.plane)) + (h << 6) + (h >> 2)) * 0x165667B19E3779F9ull;
         return size_t(h ^ (h >> 29));
+    }
+};
+
+// A face's cut points by position: cells of kCutCell metres, keyed by face
+// and cell, so looking for the cut points near an edge or a new point reads a
+// few cells instead of every cut point of the face (a large floor cut by a
+// thousand regions has tens of thousands of them).
+struct CutCell {
+    int face;
+    std::int64_t x, y, z;
+    bool operator==(const CutCell&) const = default;
+};
+
+struct CutCellHash {
+    size_t operator()(const CutCell& c) const
+    {
+        constexpr std::uint64_t k = 0x9E3779B97F4A7C15u;
+        auto mix = [](std::uint64_t h, std::int64_t v) {
+            return h ^ (static_cast<std::uint64_t>(v) + k + (h << 6) + (h >> 2));
+        };
+        std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.face)) * k;
+        h = mix(mix(mix(h, c.x), c.y), c.z);
+        return static_cast<size_t>(h);
     }
 };
 
@@ -78,6 +103,12 @@ public:
 
 private:
     void collectOnEdge(int face, int a, int b, std::vector<int>& into) const;
+    // The cut points of `face` in the cells the box [lo, hi] (widened by
+    // kMergeDistance) reaches, ascending: a superset of those within
+    // kMergeDistance of the box, in the order of m_faceCuts.
+    void cutsNear(int face, const Vec3& lo, const Vec3& hi, std::vector<int>& into) const;
+    static std::int64_t cellIndex(double v) { return static_cast<std::int64_t>(std::floor(v / kCutCell)); }
+    static CutCell cellOf(int face, const Vec3& p) { return {face, cellIndex(p.x), cellIndex(p.y), cellIndex(p.z)}; }
     void insertEdgePoints(Work& piece);
 
     const Vec3& vertex(int v) const { return m_scene.pieceVertices[size_t(v)]; }
@@ -112,12 +143,17 @@ private:
         // as a face plane in another), or from the crossing of two cut lines
         // reached in the other order in another cell: one point, not two a
         // rounding apart.
-        for (int other : m_faceCuts[size_t(m_face)])
+        // The first such point in the face's order (the lowest index).
+        std::vector<int>& near = m_nearScratch;
+        near.clear();
+        cutsNear(m_face, x, x, near);
+        for (int other : near)
             if (glm::length(vertex(other) - x) <= kMergeDistance)
                 return it->second = other;
         it->second = int(m_scene.pieceVertices.size());
         m_scene.pieceVertices.push_back(x);
         m_faceCuts[size_t(m_face)].push_back(it->second);
+        m_cutCells[cellOf(m_face, x)].push_back(it->second);
         return it->second;
     }
 
@@ -269,12 +305,15 @@ private:
 
     static constexpr double kEps = model::kDistanceEpsilon; // the builders' epsilon
     static constexpr double kMergeDistance = 1e-9;          // metres; far below any mesh size
+    static constexpr double kCutCell = 0.25;                // metres: the cell of the cut-point grid
 
     PreparedScene& m_scene;
     std::span<const std::vector<int>> m_elementLoops;
     std::vector<std::vector<Work>> m_perNode;
     std::unordered_map<CutKey, int, CutKeyHash> m_cuts;
-    std::vector<std::vector<int>> m_faceCuts; // per input face: its cut points
+    std::vector<std::vector<int>> m_faceCuts;                              // per input face: its cut points
+    std::unordered_map<CutCell, std::vector<int>, CutCellHash> m_cutCells; // the same by position
+    std::vector<int> m_nearScratch;
     struct BitsHash {
         size_t operator()(const std::array<std::uint64_t, 4>& b) const
         {
@@ -289,6 +328,26 @@ private:
     int m_face = -1;
 };
 
+void PieceBuilder::cutsNear(int face, const Vec3& lo, const Vec3& hi, std::vector<int>& into) const
+{
+    const std::vector<int>& all = m_faceCuts[size_t(face)];
+    const std::int64_t x0 = cellIndex(lo.x - kMergeDistance), x1 = cellIndex(hi.x + kMergeDistance);
+    const std::int64_t y0 = cellIndex(lo.y - kMergeDistance), y1 = cellIndex(hi.y + kMergeDistance);
+    const std::int64_t z0 = cellIndex(lo.z - kMergeDistance), z1 = cellIndex(hi.z + kMergeDistance);
+    const double cells = double(x1 - x0 + 1) * double(y1 - y0 + 1) * double(z1 - z0 + 1);
+    if (cells >= double(all.size())) { // as cheap to read them all
+        into.insert(into.end(), all.begin(), all.end());
+        return;
+    }
+    const size_t first = into.size();
+    for (std::int64_t x = x0; x <= x1; ++x)
+        for (std::int64_t y = y0; y <= y1; ++y)
+            for (std::int64_t z = z0; z <= z1; ++z)
+                if (auto it = m_cutCells.find({face, x, y, z}); it != m_cutCells.end())
+                    into.insert(into.end(), it->second.begin(), it->second.end());
+    std::sort(into.begin() + std::ptrdiff_t(first), into.end());
+}
+
 // Cut points of the piece's face lying strictly inside segment a-b. The cut
 // points were computed on the element edges and on sub-segments of them, so
 // they lie on a-b up to rounding; the tolerance is far below any mesh size.
@@ -298,7 +357,9 @@ void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into)
     const double length2 = glm::dot(d, d);
     if (length2 <= 0.0)
         return;
-    for (int x : m_faceCuts[size_t(face)]) {
+    std::vector<int> near;
+    cutsNear(face, glm::min(pa, vertex(b)), glm::max(pa, vertex(b)), near);
+    for (int x : near) {
         if (x == a || x == b)
             continue;
         const Vec3 r = vertex(x) - pa;
