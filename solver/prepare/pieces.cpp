@@ -102,7 +102,7 @@ public:
     void finish();
 
 private:
-    void collectOnEdge(int face, int a, int b, std::vector<int>& into) const;
+    void collectOnEdge(int face, int a, int b, std::vector<int>& into);
     // The cut points of `face` in the cells the box [lo, hi] (widened by
     // kMergeDistance) reaches, ascending: a superset of those within
     // kMergeDistance of the box, in the order of m_faceCuts.
@@ -313,7 +313,8 @@ private:
     std::unordered_map<CutKey, int, CutKeyHash> m_cuts;
     std::vector<std::vector<int>> m_faceCuts;                              // per input face: its cut points
     std::unordered_map<CutCell, std::vector<int>, CutCellHash> m_cutCells; // the same by position
-    std::vector<int> m_nearScratch;
+    std::vector<int> m_nearScratch;                                        // cutVertex's
+    std::vector<int> m_edgeScratch;                                        // collectOnEdge's
     struct BitsHash {
         size_t operator()(const std::array<std::uint64_t, 4>& b) const
         {
@@ -351,13 +352,15 @@ void PieceBuilder::cutsNear(int face, const Vec3& lo, const Vec3& hi, std::vecto
 // Cut points of the piece's face lying strictly inside segment a-b. The cut
 // points were computed on the element edges and on sub-segments of them, so
 // they lie on a-b up to rounding; the tolerance is far below any mesh size.
-void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into) const
+void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into)
 {
     const Vec3 pa = vertex(a), d = vertex(b) - pa;
     const double length2 = glm::dot(d, d);
     if (length2 <= 0.0)
         return;
-    std::vector<int> near;
+    // One scratch list for every edge: this runs for every edge of every piece.
+    std::vector<int>& near = m_edgeScratch;
+    near.clear();
     cutsNear(face, glm::min(pa, vertex(b)), glm::max(pa, vertex(b)), near);
     for (int x : near) {
         if (x == a || x == b)

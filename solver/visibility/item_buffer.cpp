@@ -20,7 +20,7 @@ void ItemBuffer::clear(std::uint32_t faces)
         if (!(faces & (1u << f)))
             continue;
         const auto begin = static_cast<std::ptrdiff_t>(m_offset[f]);
-        const auto end = begin + static_cast<std::ptrdiff_t>(m_n) * (f == 0 ? m_n : m_n / 2);
+        const auto end = begin + static_cast<std::ptrdiff_t>(m_n) * height(static_cast<HemicubeFace>(f));
         std::fill(m_ids.begin() + begin, m_ids.begin() + end, kEmptyItem);
         if (!m_depth.empty())
             std::fill(m_depth.begin() + begin, m_depth.begin() + end, 0.0f);

@@ -210,6 +210,7 @@ SolverOptions warehouseOptions(int elements, bool regions)
 }
 
 struct ScaleFigures {
+    int threads = 0; // the hemicube threads the solver used
     double msPerShot = 0.0;
     double elements = 0.0;
     double regions = 0.0;
@@ -248,12 +249,11 @@ void scale(benchmark::State& state)
         fig.regions = static_cast<double>(solver.prepared().regions.size());
         fig.culledPerShot = double(solver.shooting().visibilityStats().regionsCulled) / s.renderedShots;
         fig.peakMiB = peakMegabytes();
+        fig.threads = solver.shooting().threads();
     }
     char key[128];
     std::snprintf(key, sizeof key, "%7d elements, %3d^2, %d threads, %s", int(fig.elements), int(state.range(1)),
-                  solver::resolveThreadCount(int(state.range(2))) > 3 ? 3
-                                                                      : solver::resolveThreadCount(int(state.range(2))),
-                  state.range(4) ? "auto regions" : "one BSP");
+                  fig.threads, state.range(4) ? "auto regions" : "one BSP");
     scaleMeasured()[key].push_back(fig);
     state.counters["ms_per_shot"] = fig.msPerShot;
     state.counters["elements"] = fig.elements;
