@@ -64,8 +64,9 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     solver->m_prepared = std::move(*prepared);
     if (s.adaptive.enabled)
         solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
-    solver->m_shooting = std::make_unique<Shooting>(solver->m_prepared, s.hemicube, s.visibility,
-                                                    ShootingOptions{options.threads, options.formFactorCacheBytes});
+    solver->m_shooting = std::make_unique<Shooting>(
+        solver->m_prepared, s.hemicube, s.visibility,
+        ShootingOptions{options.threads, options.formFactorCacheBytes, options.overrelaxation});
     solver->m_mesh = makeMesh(solver->m_prepared, 0);
     solver->m_stats.preprocessSeconds = secondsSince(start);
     {

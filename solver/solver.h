@@ -38,6 +38,7 @@ struct SolverOptions : SettingsOverrides {
     int autoRegionPatchThreshold = kAutoRegionPatchThreshold;
     int threads = 0; // hemicube render threads; 0 = every core
     std::size_t formFactorCacheBytes = kDefaultFormFactorCacheBytes;
+    double overrelaxation = kDefaultOverrelaxation; // ShootingOptions
 };
 
 class Solver {

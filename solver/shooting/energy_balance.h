@@ -12,6 +12,9 @@ struct EnergyBalance {
     Rgb absorbed{0.0};
     Rgb unshot{0.0};
     Rgb escaped{0.0};
+    // Sum of the magnitudes of the elements' unshot power: `unshot` itself
+    // unless overrelaxation left some of it negative.
+    Rgb unshotMagnitude{0.0};
 };
 
 // Rec. 709 luminance weights: "most unshot power", the ambient term and the

@@ -1,12 +1,20 @@
 #include "solver/shooting/shooting.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace regio::solver {
 
 double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+namespace {
+// Luminance of the magnitudes: the luminance itself for power that is
+// nowhere negative (every shot without overrelaxation).
+double magnitude(const Rgb& c) { return 0.2126 * std::abs(c.r) + 0.7152 * std::abs(c.g) + 0.0722 * std::abs(c.b); }
+} // namespace
 
 Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode,
                    const ShootingOptions& options)
@@ -15,6 +23,7 @@ Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Vi
     , m_renderer(scene, m_hemicube, mode, options.threads)
     , m_buffer(m_renderer.makeBuffer())
     , m_cacheBudget(options.formFactorCacheBytes)
+    , m_overrelaxation(options.overrelaxation)
 {
     dropRows();
     const size_t elements = scene.elements.size();
@@ -41,7 +50,7 @@ int Shooting::selectShooter() const
     int best = -1;
     double bestPower = 0.0;
     for (size_t p = 0; p < m_patchPower.size(); ++p) {
-        const double power = luminance(m_patchPower[p]);
+        const double power = magnitude(m_patchPower[p]);
         if (power > bestPower) {
             bestPower = power;
             best = static_cast<int>(p);
@@ -111,11 +120,15 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
 
     // The shooter's power: the area-weighted sum of its elements' unshot radiosity.
     Rgb power{0.0};
+    const double kept = 1.0 - m_overrelaxation; // of the shooter's unshot radiosity
     for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
-        power += m_unshot[static_cast<size_t>(e)] * m_scene.elements[static_cast<size_t>(e)].area;
-        m_unshot[static_cast<size_t>(e)] = Rgb{0.0};
+        Rgb& unshot = m_unshot[static_cast<size_t>(e)];
+        power += unshot * m_scene.elements[static_cast<size_t>(e)].area;
+        unshot = kept == 0.0 ? Rgb{0.0} : unshot * kept;
     }
-    m_patchPower[static_cast<size_t>(shooter)] = Rgb{0.0};
+    m_patchPower[static_cast<size_t>(shooter)] = kept == 0.0 ? Rgb{0.0} : power * kept;
+    if (kept != 0.0)
+        power *= m_overrelaxation;
 
     Rgb received{0.0};
     for (size_t k = 0; k < row->elements.size(); ++k) {
@@ -154,14 +167,17 @@ EnergyBalance Shooting::energy() const
     e.emitted = m_emitted;
     e.absorbed = m_absorbed;
     e.escaped = m_escaped;
-    for (size_t j = 0; j < m_unshot.size(); ++j)
-        e.unshot += m_unshot[j] * m_scene.elements[j].area;
+    for (size_t j = 0; j < m_unshot.size(); ++j) {
+        const Rgb u = m_unshot[j] * m_scene.elements[j].area;
+        e.unshot += u;
+        e.unshotMagnitude += glm::abs(u);
+    }
     return e;
 }
 
 double Shooting::unshotRatio(const EnergyBalance& books) const
 {
-    const Rgb& unshot = books.unshot;
+    const Rgb& unshot = books.unshotMagnitude;
     double ratio = 0.0;
     for (int c = 0; c < 3; ++c)
         if (m_emitted[c] > 0.0)

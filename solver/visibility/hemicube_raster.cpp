@@ -277,9 +277,14 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
             ++bound;
             rem = den - rem;
         }
+        std::int64_t* bounds = rightEdge ? m_right.data() : m_left.data();
+        if (j1 - j0 == 1) { // most edges of small elements: no step needed
+            if (rightEdge ? bound < bounds[j0] : bound > bounds[j0])
+                bounds[j0] = bound;
+            continue;
+        }
         std::int64_t stepQ, stepR; // one dx = stepQ den + stepR, 0 <= stepR < den
         floorDivMod(one * dx, den, stepQ, stepR);
-        std::int64_t* bounds = rightEdge ? m_right.data() : m_left.data();
         for (int j = j0; j < j1; ++j) {
             if (rightEdge ? bound < bounds[j] : bound > bounds[j])
                 bounds[j] = bound;

@@ -16,6 +16,10 @@ ItemBuffer::ItemBuffer(const Hemicube& hemicube, bool withDepth)
 
 void ItemBuffer::clear(std::uint32_t faces)
 {
+    if (!m_spans.empty()) {
+        clearStretch();
+        return;
+    }
     for (int f = 0; f < kHemicubeFaceCount; ++f) {
         if (!(faces & (1u << f)))
             continue;
@@ -24,6 +28,55 @@ void ItemBuffer::clear(std::uint32_t faces)
         std::fill(m_ids.begin() + begin, m_ids.begin() + end, kEmptyItem);
         if (!m_depth.empty())
             std::fill(m_depth.begin() + begin, m_depth.begin() + end, 0.0f);
+    }
+}
+
+ItemBuffer ItemBuffer::forStretch(const Hemicube& hemicube, bool withDepth)
+{
+    ItemBuffer b(hemicube, withDepth);
+    std::fill(b.m_ids.begin(), b.m_ids.end(), kUnpaintedItem);
+    b.m_spans.assign(static_cast<size_t>(b.rowCount()), Span{b.m_n, 0});
+    return b;
+}
+
+void ItemBuffer::clearStretch()
+{
+    const auto n = static_cast<size_t>(m_n);
+    for (size_t r = 0; r < m_spans.size(); ++r) {
+        Span& s = m_spans[r];
+        if (s.begin >= s.end)
+            continue;
+        const auto b = r * n + static_cast<size_t>(s.begin), e = r * n + static_cast<size_t>(s.end);
+        std::fill(m_ids.begin() + static_cast<std::ptrdiff_t>(b), m_ids.begin() + static_cast<std::ptrdiff_t>(e),
+                  kUnpaintedItem);
+        if (!m_depth.empty())
+            std::fill(m_depth.begin() + static_cast<std::ptrdiff_t>(b),
+                      m_depth.begin() + static_cast<std::ptrdiff_t>(e), 0.0f);
+        s = Span{m_n, 0};
+    }
+}
+
+void ItemBuffer::mergeLater(const ItemBuffer& later, int rowBegin, int rowEnd)
+{
+    const auto n = static_cast<size_t>(m_n);
+    for (auto r = static_cast<size_t>(rowBegin); r < static_cast<size_t>(rowEnd); ++r) {
+        const Span s = later.m_spans[r];
+        const size_t begin = r * n + static_cast<size_t>(s.begin), end = r * n + static_cast<size_t>(s.end);
+        ItemId* ids = m_ids.data();
+        const ItemId* laterIds = later.m_ids.data();
+        // Branch-free loops, so that the compiler vectorises them.
+        if (m_depth.empty()) {
+            for (size_t i = begin; i < end; ++i)
+                ids[i] = laterIds[i] != kUnpaintedItem ? laterIds[i] : ids[i];
+            continue;
+        }
+        float* depth = m_depth.data();
+        const float* laterDepth = later.m_depth.data();
+        for (size_t i = begin; i < end; ++i) {
+            const bool nearer = laterDepth[i] > depth[i];
+            ids[i] = nearer ? laterIds[i] : ids[i];
+            depth[i] = nearer ? laterDepth[i] : depth[i];
+        }
     }
 }
 

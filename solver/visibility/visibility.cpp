@@ -25,26 +25,27 @@ ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
     return ShooterFrame::make(p.centroid, props.plane.normal, b - a);
 }
 
-Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode,
-                       HemicubeFaceSet faces)
+Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode)
     : m_scene(scene)
     , m_hemicube(hemicube)
     , m_mode(mode)
-    , m_faces(faces & kAllHemicubeFaces)
-    , m_countsStats((faces & faceBit(HemicubeFace::Top)) != 0)
     , m_raster(hemicube)
 {
-    for (int f = 0; f < kHemicubeFaceCount; ++f)
-        if (!(m_faces & (1u << f)))
-            m_otherFaceBits |= faceOutcodeBits(f);
 }
 
 ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == model::Visibility::ZBuffer); }
 
-void Visibility::prepareFrame(const ShooterFrame& frame)
+void Visibility::prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces)
 {
     m_frame = frame;
-    m_shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
+    m_faces = faces & kAllHemicubeFaces;
+    m_countsStats = (m_faces & faceBit(HemicubeFace::Top)) != 0;
+    m_otherFaceBits = 0;
+    for (int f = 0; f < kHemicubeFaceCount; ++f)
+        if (!(m_faces & (1u << f)))
+            m_otherFaceBits |= faceOutcodeBits(f);
+    // Every paint takes a new stamp below, so the cached projections are
+    // always those of this paint's faces.
     const size_t count = m_scene.pieceVertices.size();
     if (m_stamp.size() != count) {
         m_local.resize(count);
@@ -78,9 +79,9 @@ inline void Visibility::touch(int vertex)
             projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
 }
 
-bool Visibility::regionCulled(int region) const
+bool Visibility::regionCulled(int region, const Plane& shooterPlane) const
 {
-    return boxBehindPlane(m_scene.regions[static_cast<size_t>(region)].bounds, m_shooterPlane);
+    return boxBehindPlane(m_scene.regions[static_cast<size_t>(region)].bounds, shooterPlane);
 }
 
 template <class Paint>
@@ -121,6 +122,7 @@ void Visibility::paintPiece(int piece, ItemId id, ItemBuffer& buffer)
     rasterisePiece(piece, [&](HemicubeFace f, int row, int x0, int x1) {
         ItemId* ids = buffer.face(f) + row * n;
         std::fill(ids + x0, ids + x1, id);
+        buffer.painted(f, row, x0, x1);
     });
 }
 
@@ -158,6 +160,7 @@ void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
         const double slope = nf.x * scale;
         ItemId* ids = buffer.face(f) + row * n;
         float* depth = buffer.depth(f) + row * n;
+        buffer.painted(f, row, x0, x1);
         const double first = base + slope * (0.5 * pixel - 1.0); // depth at column 0
         const double step = slope * pixel;
         // Branch-free so that the compiler can vectorise the span.
@@ -172,66 +175,71 @@ void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
     });
 }
 
-bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order)
 {
-    prepareFrame(frame);
-    buffer.clear(m_faces);
-    int sinceCheck = 0;
-    bool cancelled = false;
-    auto shouldStop = [&](int elements) {
-        sinceCheck += elements;
-        if (cancel && sinceCheck >= kCancelCheckInterval) {
-            sinceCheck = 0;
-            cancelled = cancel->load(std::memory_order_relaxed);
-        }
-        return cancelled;
+    order.clear();
+    const Plane shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
+    auto accept = [&](int region) {
+        const bool culled = regionCulled(region, shooterPlane);
+        m_stats.regionsCulled += culled;
+        return !culled;
     };
-
     if (m_mode == model::Visibility::Painter) {
-        forEachNodeBackToFront(
-            m_scene, frame.origin,
-            [&](int region) {
-                const bool culled = cancelled || regionCulled(region);
-                m_stats.regionsCulled += culled && !cancelled && m_countsStats;
-                return !culled;
-            },
-            [&](int nodeIndex, bool eyeInFront) {
-                if (cancelled)
-                    return;
-                const BspNode& node = m_scene.nodes[static_cast<size_t>(nodeIndex)];
-                forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
-                    for (int i = begin; i < end; ++i) {
-                        const auto element = static_cast<std::uint32_t>(m_scene.pieces[static_cast<size_t>(i)].element);
-                        paintPiece(i, receives ? itemOfElement(element) : kBlockerItem, buffer);
-                    }
-                });
-                shouldStop(node.pieceCount);
-            });
-        return !cancelled;
+        forEachNodeBackToFront(m_scene, frame.origin, accept, [&](int nodeIndex, bool eyeInFront) {
+            forEachPaintRange(m_scene.nodes[static_cast<size_t>(nodeIndex)], eyeInFront,
+                              [&](int begin, int end, bool receives) {
+                                  if (begin < end)
+                                      order.push_back({begin, end, receives});
+                              });
+        });
+        return;
     }
-
-    // Z-buffer: piece array order (node by node), regions culled the same way.
+    // Z-buffer: node array order, regions culled the same way.
     std::vector<char>& culled = m_regionCulled;
     culled.resize(m_scene.regions.size());
-    for (size_t r = 0; r < culled.size(); ++r) {
-        culled[r] = regionCulled(static_cast<int>(r));
-        m_stats.regionsCulled += culled[r] && m_countsStats;
-    }
-    for (const BspNode& node : m_scene.nodes) {
-        if (node.region >= 0 && culled[static_cast<size_t>(node.region)])
-            continue;
-        for (int i = node.firstPiece; i < node.firstPiece + node.pieceCount; ++i) {
+    for (size_t r = 0; r < culled.size(); ++r)
+        culled[r] = !accept(static_cast<int>(r));
+    for (const BspNode& node : m_scene.nodes)
+        if (node.pieceCount > 0 && (node.region < 0 || !culled[static_cast<size_t>(node.region)]))
+            order.push_back({node.firstPiece, node.firstPiece + node.pieceCount, true});
+}
+
+bool Visibility::paint(const ShooterFrame& frame, std::span<const PaintRange> ranges, ItemBuffer& buffer,
+                       const std::atomic<bool>* cancel, HemicubeFaceSet faces)
+{
+    if (cancel && cancel->load(std::memory_order_relaxed))
+        return false;
+    prepareFrame(frame, faces);
+    int sinceCheck = 0;
+    const bool painter = m_mode == model::Visibility::Painter;
+    for (const PaintRange& range : ranges) {
+        for (int i = range.begin; i < range.end; ++i) {
             const Piece& piece = m_scene.pieces[static_cast<size_t>(i)];
-            const Element& e = m_scene.elements[static_cast<size_t>(piece.element)];
+            const auto element = static_cast<std::uint32_t>(piece.element);
+            if (painter) {
+                paintPiece(i, range.receives ? itemOfElement(element) : kBlockerItem, buffer);
+                continue;
+            }
+            const Element& e = m_scene.elements[element];
             const double facing =
                 glm::dot(e.normal, frame.origin - m_scene.pieceVertices[static_cast<size_t>(piece.vertices[0])]);
-            depthTestPiece(i, facing > 0.0 ? itemOfElement(static_cast<std::uint32_t>(piece.element)) : kBlockerItem,
-                           buffer);
-            if (shouldStop(1))
+            depthTestPiece(i, facing > 0.0 ? itemOfElement(element) : kBlockerItem, buffer);
+        }
+        sinceCheck += range.end - range.begin;
+        if (cancel && sinceCheck >= kCancelCheckInterval) {
+            sinceCheck = 0;
+            if (cancel->load(std::memory_order_relaxed))
                 return false;
         }
     }
     return true;
+}
+
+bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+{
+    buffer.clear();
+    paintOrder(frame, m_order);
+    return paint(frame, m_order, buffer, cancel);
 }
 
 } // namespace regio::solver

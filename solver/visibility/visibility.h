@@ -23,10 +23,13 @@
 // shooter's frame and outcoded once per shooter, whatever number of elements
 // share it (docs/performance.md).
 //
-// A Visibility may own only some of the five faces (a face set): it walks the
-// same order, paints only its own faces and leaves the others' pixels alone,
-// so several of them fill one item buffer side by side on several threads
-// (solver/visibility/hemicube_renderer.h) with the pixels one would paint.
+// A render is two steps: the paint order (the ranges of pieces in the order
+// they are painted, culled regions left out) and the painting of a stretch of
+// that order. Several Visibility objects can share a render on several
+// threads (solver/visibility/hemicube_renderer.h) in two ways: each paints a
+// consecutive stretch of the order into a buffer of its own, merged after;
+// or each owns some of the five faces (a face set) and paints the whole
+// order on those faces only, leaving the others' pixels alone.
 #include "model/scene.h"
 #include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/hemicube.h"
@@ -35,6 +38,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace regio::solver {
@@ -60,6 +64,14 @@ inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
     }
 }
 
+// A run of consecutive pieces in paint order. The painter paints them as
+// receivers or as blockers; the z-buffer decides per piece by its facing.
+struct PaintRange {
+    std::int32_t begin = 0;
+    std::int32_t end = 0;
+    bool receives = true;
+};
+
 // A set of hemicube faces: bit f is face f.
 using HemicubeFaceSet = std::uint32_t;
 inline constexpr HemicubeFaceSet kAllHemicubeFaces = (1u << kHemicubeFaceCount) - 1;
@@ -82,43 +94,52 @@ class Visibility {
 public:
     // Keeps a reference to `scene` and `hemicube`; both must outlive it. The
     // scene may grow (adaptive subdivision): caches follow its vertex count.
-    // It paints the faces of `faces` only; the statistics are counted by the
-    // Visibility that owns the top face (each piece once, whatever the split).
-    Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode,
-               HemicubeFaceSet faces = kAllHemicubeFaces);
+    Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode);
 
     model::Visibility mode() const { return m_mode; }
     // The item buffer this visibility writes; it has a depth plane in z-buffer mode.
     ItemBuffer makeBuffer() const;
 
     // Renders the view of a shooter sitting on the plane `frame.n` through
-    // `frame.origin` into this visibility's faces of `buffer` (cleared first;
-    // the other faces are not touched). When `cancel` becomes true the render
-    // stops early and returns false (the buffer is then incomplete).
+    // `frame.origin` into `buffer` (cleared first): paintOrder, then paint.
+    // When `cancel` becomes true the render stops early and returns false (the
+    // buffer is then incomplete).
     bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr);
+
+    // The shooter's paint order: the painter's back-to-front node order
+    // (§5.6, Appendix A) split into forEachPaintRange's ranges, or the
+    // z-buffer's node array order; regions behind the shooter's plane are
+    // left out (and counted in stats().regionsCulled).
+    void paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order);
+    // Paints `ranges` (a stretch of the shooter's paint order) on the faces
+    // in `faces` over what `buffer` holds, without clearing it, and leaves the
+    // other faces' pixels alone; false if cancelled. The pieces count in
+    // stats() when `faces` holds the top face (once each in a face split).
+    bool paint(const ShooterFrame& frame, std::span<const PaintRange> ranges, ItemBuffer& buffer,
+               const std::atomic<bool>* cancel = nullptr, HemicubeFaceSet faces = kAllHemicubeFaces);
 
     const VisibilityStats& stats() const { return m_stats; }
 
 private:
-    void prepareFrame(const ShooterFrame& frame);
+    void prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces);
     void touch(int vertex);
     template <class Paint>
     void rasterisePiece(int piece, Paint&& paint);
     void paintPiece(int piece, ItemId id, ItemBuffer& buffer);
     void depthTestPiece(int piece, ItemId id, ItemBuffer& buffer);
-    bool regionCulled(int region) const;
+    bool regionCulled(int region, const Plane& shooterPlane) const;
 
     const PreparedScene& m_scene;
     const Hemicube& m_hemicube;
     model::Visibility m_mode;
-    HemicubeFaceSet m_faces;
-    // Outcode bits of the faces this visibility does not paint: OR-ed into a
-    // piece's AND code, they make those faces look wholly outside.
+    // The faces of the paint under way.
+    HemicubeFaceSet m_faces = kAllHemicubeFaces;
+    // Outcode bits of the faces not painted: OR-ed into a piece's AND code,
+    // they make those faces look wholly outside.
     std::uint32_t m_otherFaceBits = 0;
     bool m_countsStats = true;
     HemicubeRaster m_raster;
     ShooterFrame m_frame;
-    Plane m_shooterPlane;
 
     // Per-vertex cache, valid for the shooter whose stamp it carries.
     std::vector<Vec3> m_local;
@@ -126,6 +147,7 @@ private:
     std::vector<FixedVertex> m_projected; // kHemicubeFaceCount per vertex
     std::vector<std::uint32_t> m_stamp;
     std::uint32_t m_currentStamp = 0;
+    std::vector<PaintRange> m_order;  // render's paint order
     std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter
 
     VisibilityStats m_stats;

@@ -7,17 +7,20 @@
 // (preparation apart), the shots, and the shots that rendered a hemicube (the
 // others reused the form factors kept from an earlier shot of the same patch).
 //
-//   cornell/T/C      the Cornell box sample with its own settings (adaptive on)
-//   two_lights/T/C   the two-light sample with its own settings (adaptive on)
-//   furnished/T/C    a generated furnished room (tests/support/furnished_room.h,
+//   cornell/T/C/W    the Cornell box sample with its own settings (adaptive on)
+//   two_lights/T/C/W the two-light sample with its own settings (adaptive on)
+//   furnished/T/C/W  a generated furnished room (tests/support/furnished_room.h,
 //                    seed 1, 11 objects, automatic regions) meshed to about
 //                    20 000 elements (the patch size from a coarse mesh's
 //                    count), fixed mesh, hemicube 150
 //
 // T is the hemicube threads (0 = every core), C the form-factor row budget in
-// MiB (0 = render every shot): T=1, C=0 is how the solver ran before either
-// existed. The answer is the same for every T and C (tests/solver/shooting/
-// shot_reuse_test.cpp). T=1, C=0 runs once (it is slow), the others three times.
+// MiB (0 = render every shot), W = 1 for overrelaxed shots (the default,
+// shooting.h), 0 for classic progressive refinement: T=1, C=0, W=0 is how
+// the solver ran before any of them existed. The answer is the same for every
+// T and C (tests/solver/shooting/shot_reuse_test.cpp) and within 0.5 % per
+// face for either W (shooting_test.cpp). T=1, C=0, W=0 runs once (it is
+// slow), the others three times.
 //
 // A shot's cost at scale: a generated warehouse (the furnished-room generator,
 // seed 7, one object per thousand elements, at least 10, on a floor that grows
@@ -29,7 +32,7 @@
 //
 // with the milliseconds per shot, the regions culled per shot and the peak
 // resident memory of the process so far (run one case alone to read its own:
-// --benchmark_filter). Rows are kept as in a solve (256 MiB), but 100 shots
+// --benchmark_filter). Rows are kept as in a solve (1 GiB), but 100 shots
 // of distinct patches render every one.
 //
 //   prepare          the regional tree, BSP trees and meshing of a scene of
@@ -134,6 +137,7 @@ void converge(benchmark::State& state, const Case& c, const char* name)
     SolverOptions options = c.options;
     options.threads = static_cast<int>(state.range(0));
     options.formFactorCacheBytes = static_cast<std::size_t>(state.range(1)) << 20;
+    options.overrelaxation = state.range(2) ? kDefaultOverrelaxation : 1.0;
     Figures fig;
     for (auto _ : state) {
         auto built = Solver::create(c.scene, options);
@@ -154,7 +158,7 @@ void converge(benchmark::State& state, const Case& c, const char* name)
         state.SetIterationTime(fig.seconds);
     }
     const std::string key = std::string(name) + " threads " + std::to_string(state.range(0)) + ", rows " +
-                            std::to_string(state.range(1)) + " MiB";
+                            std::to_string(state.range(1)) + " MiB, " + (state.range(2) ? "overrelaxed" : "classic");
     measured()[key].push_back(fig);
     state.counters["shots"] = fig.shots;
     state.counters["rendered"] = fig.rendered;
@@ -308,22 +312,23 @@ double median(std::vector<double> v)
 
 } // namespace
 
-// T=1, C=0 (how the solver ran before threads and kept rows) once: it is slow.
+// T=1, C=0, W=0 (how the solver ran before threads, kept rows and
+// overrelaxation) once: it is slow.
 #define REGIO_CONVERGE(fn, name)                                                                                       \
     BENCHMARK(fn)                                                                                                      \
         ->Name(name)                                                                                                   \
-        ->ArgNames({"threads", "rows_mib"})                                                                            \
-        ->Args({1, 0})                                                                                                 \
+        ->ArgNames({"threads", "rows_mib", "overrelax"})                                                               \
+        ->Args({1, 0, 0})                                                                                              \
         ->Unit(benchmark::kMillisecond)                                                                                \
         ->UseManualTime()                                                                                              \
         ->Iterations(1)                                                                                                \
         ->Repetitions(1);                                                                                              \
     BENCHMARK(fn)                                                                                                      \
         ->Name(name)                                                                                                   \
-        ->ArgNames({"threads", "rows_mib"})                                                                            \
-        ->Args({0, 0})                                                                                                 \
-        ->Args({1, 256})                                                                                               \
-        ->Args({0, 256})                                                                                               \
+        ->ArgNames({"threads", "rows_mib", "overrelax"})                                                               \
+        ->Args({0, 1024, 0})                                                                                           \
+        ->Args({1, 1024, 1})                                                                                           \
+        ->Args({0, 1024, 1})                                                                                           \
         ->Unit(benchmark::kMillisecond)                                                                                \
         ->UseManualTime()                                                                                              \
         ->Iterations(1)                                                                                                \
@@ -362,7 +367,7 @@ int main(int argc, char** argv)
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     std::printf("\nTo 0.1 %% unshot, medians (seconds = shooting + refinement; preparation apart):\n");
-    std::printf("%-46s %9s %9s %9s %9s %9s\n", "case", "seconds", "shots", "rendered", "elements", "prepare");
+    std::printf("%-62s %9s %9s %9s %9s %9s\n", "case", "seconds", "shots", "rendered", "elements", "prepare");
     for (const auto& [key, runs] : measured()) {
         std::vector<double> seconds, shots, rendered, elements, prepare;
         for (const Figures& f : runs) {
@@ -372,7 +377,7 @@ int main(int argc, char** argv)
             elements.push_back(f.elements);
             prepare.push_back(f.prepare);
         }
-        std::printf("%-46s %9.3f %9.0f %9.0f %9.0f %9.3f\n", key.c_str(), median(seconds), median(shots),
+        std::printf("%-62s %9.3f %9.0f %9.0f %9.0f %9.3f\n", key.c_str(), median(seconds), median(shots),
                     median(rendered), median(elements), median(prepare));
     }
     if (!scaleMeasured().empty()) {

