@@ -165,10 +165,14 @@ void triangulateConvex(std::vector<int> polygon, const std::vector<Vec3>& positi
         out.push_back({polygon[0], polygon[i], polygon[i + 1]});
 }
 
-// One group: weld, find T-vertices, average, re-triangulate, emit.
-void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, const GroupKey& key,
-                 const std::vector<int>& elements, const SmoothingOptions& options, LitMesh& mesh)
+} // namespace
+
+// One group: weld, find T-vertices, re-triangulate, and note which elements
+// each vertex averages (its value is computed by shade()).
+void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNormal, const Rgb& reflectance,
+                              const std::vector<int>& elements)
 {
+    const SmoothingOptions& options = m_options;
     // Weld the corners.
     std::vector<Vec3> positions;
     std::vector<std::array<int, 3>> corners(elements.size());
@@ -250,27 +254,25 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
         }
     }
 
-    // Area-weighted average of the elements touching each vertex (§6).
-    std::vector<Rgb> sum(positions.size(), Rgb(0.0));
-    std::vector<double> weight(positions.size(), 0.0);
-    std::vector<Rgb> plainSum(positions.size(), Rgb(0.0));
-    std::vector<int> count(positions.size(), 0);
+    // Area-weighted average of the elements touching each vertex (§6): the
+    // terms in the order shade() sums them, the same for every radiosity.
+    const auto base = static_cast<uint32_t>(m_geometry.positions.size());
+    std::vector<std::vector<std::pair<uint32_t, double>>> terms(positions.size());
     for (size_t k = 0; k < elements.size(); ++k) {
-        const size_t e = static_cast<size_t>(elements[k]);
+        const auto e = static_cast<uint32_t>(elements[k]);
         const double area = scene.elements[e].area;
-        for (int v : outlines[k]) {
-            sum[static_cast<size_t>(v)] += radiosity[e] * area;
-            weight[static_cast<size_t>(v)] += area;
-            plainSum[static_cast<size_t>(v)] += radiosity[e];
-            ++count[static_cast<size_t>(v)];
-        }
+        for (int v : outlines[k])
+            terms[static_cast<size_t>(v)].emplace_back(e, area);
     }
-    std::vector<Rgb> value(positions.size(), Rgb(0.0));
     for (size_t v = 0; v < positions.size(); ++v) {
-        if (weight[v] > 0.0)
-            value[v] = sum[v] / weight[v];
-        else if (count[v] > 0) // only zero-area elements touch it
-            value[v] = plainSum[v] / static_cast<double>(count[v]);
+        double weight = 0.0;
+        for (const auto& [e, area] : terms[v]) {
+            m_termElement.push_back(e);
+            m_termArea.push_back(area);
+            weight += area;
+        }
+        m_weight.push_back(weight);
+        m_termEnd.push_back(static_cast<uint32_t>(m_termElement.size()));
     }
 
     // The output triangles, free of T-vertices.
@@ -280,7 +282,7 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
         if (outlines[k].size() == 3)
             triangles.push_back({outlines[k][0], outlines[k][1], outlines[k][2]});
         else
-            triangulateConvex(outlines[k], positions, key.plane.normal, triangles);
+            triangulateConvex(outlines[k], positions, planeNormal, triangles);
         const int face =
             scene.properties[static_cast<size_t>(scene.elements[static_cast<size_t>(elements[k])].properties)].face;
         triangleFace.resize(triangles.size(), face);
@@ -303,16 +305,80 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
             boundary[static_cast<size_t>(a)] = boundary[static_cast<size_t>(b)] = 1;
     }
 
-    if (options.extrapolateBoundary) {
-        const std::vector<Rgb> average = value;
+    // What the options need of the neighbourhood, in output vertex numbers.
+    if (options.extrapolateBoundary || options.neighbourPasses > 0) {
         for (size_t v = 0; v < positions.size(); ++v) {
-            if (!boundary[v])
+            m_boundary.push_back(boundary[v]);
+            for (int w : neighbours[v])
+                m_neighbour.push_back(base + static_cast<uint32_t>(w));
+            m_neighbourEnd.push_back(static_cast<uint32_t>(m_neighbour.size()));
+        }
+    }
+
+    // Emit the group's geometry: its vertices once each, then its triangles.
+    const glm::vec3 normal = glm::normalize(toFloat(glm::normalize(planeNormal)));
+    for (size_t v = 0; v < positions.size(); ++v) {
+        m_geometry.positions.push_back(toFloat(positions[v]));
+        m_geometry.normals.push_back(normal);
+        m_geometry.reflectance.push_back(toFloat(reflectance));
+    }
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        for (int v : triangles[t])
+            m_geometry.indices.push_back(base + static_cast<uint32_t>(v));
+        m_geometry.triangleFace.push_back(triangleFace[t]);
+    }
+}
+
+SmoothShading::SmoothShading(const PreparedScene& scene, const SmoothingOptions& options)
+    : m_options(options)
+    , m_elements(scene.elements.size())
+{
+    for (const InputFace& f : scene.faces)
+        m_geometry.faceIds.push_back(f.id);
+    const Grouping groups = groupElements(scene);
+    for (size_t g = 0; g < groups.keys.size(); ++g) {
+        if (!groups.elements[g].empty())
+            planGroup(scene, groups.keys[g].plane.normal, groups.keys[g].reflectance, groups.elements[g]);
+    }
+}
+
+void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm::vec3>& radiosity) const
+{
+    if (elementRadiosity.size() != m_elements)
+        throw std::invalid_argument("smooth shading: " + std::to_string(elementRadiosity.size()) +
+                                    " radiosity values for " + std::to_string(m_elements) + " elements");
+    const size_t vertices = m_weight.size();
+    std::vector<Rgb> value(vertices, Rgb(0.0));
+    uint32_t begin = 0;
+    for (size_t v = 0; v < vertices; ++v) {
+        const uint32_t end = m_termEnd[v];
+        if (m_weight[v] > 0.0) {
+            Rgb sum(0.0);
+            for (uint32_t t = begin; t < end; ++t)
+                sum += elementRadiosity[m_termElement[t]] * m_termArea[t];
+            value[v] = sum / m_weight[v];
+        } else if (end > begin) { // only zero-area elements touch it
+            Rgb sum(0.0);
+            for (uint32_t t = begin; t < end; ++t)
+                sum += elementRadiosity[m_termElement[t]];
+            value[v] = sum / static_cast<double>(end - begin);
+        }
+        begin = end;
+    }
+    const auto neighboursOf = [&](size_t v) {
+        const uint32_t first = v == 0 ? 0 : m_neighbourEnd[v - 1];
+        return std::span<const uint32_t>(m_neighbour.data() + first, m_neighbourEnd[v] - first);
+    };
+    if (m_options.extrapolateBoundary) {
+        const std::vector<Rgb> average = value;
+        for (size_t v = 0; v < vertices; ++v) {
+            if (!m_boundary[v])
                 continue;
             Rgb inner(0.0);
             int n = 0;
-            for (int w : neighbours[v]) {
-                if (!boundary[static_cast<size_t>(w)]) {
-                    inner += average[static_cast<size_t>(w)];
+            for (uint32_t w : neighboursOf(v)) {
+                if (!m_boundary[w]) {
+                    inner += average[w];
                     ++n;
                 }
             }
@@ -320,37 +386,30 @@ void smoothGroup(const PreparedScene& scene, std::span<const Rgb> radiosity, con
                 value[v] = glm::max(2.0 * average[v] - inner / static_cast<double>(n), Rgb(0.0));
         }
     }
-
-    for (int pass = 0; pass < options.neighbourPasses; ++pass) {
+    for (int pass = 0; pass < m_options.neighbourPasses; ++pass) {
         const std::vector<Rgb> previous = value;
-        for (size_t v = 0; v < positions.size(); ++v) {
-            if (neighbours[v].empty())
+        for (size_t v = 0; v < vertices; ++v) {
+            const std::span<const uint32_t> around = neighboursOf(v);
+            if (around.empty())
                 continue;
             Rgb mean(0.0);
-            for (int w : neighbours[v])
-                mean += previous[static_cast<size_t>(w)];
-            mean /= static_cast<double>(neighbours[v].size());
-            value[v] = previous[v] + options.neighbourWeight * (mean - previous[v]);
+            for (uint32_t w : around)
+                mean += previous[w];
+            mean /= static_cast<double>(around.size());
+            value[v] = previous[v] + m_options.neighbourWeight * (mean - previous[v]);
         }
     }
-
-    // Emit the group: its vertices once each, then its triangles.
-    const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
-    const glm::vec3 normal = glm::normalize(toFloat(glm::normalize(key.plane.normal)));
-    for (size_t v = 0; v < positions.size(); ++v) {
-        mesh.positions.push_back(toFloat(positions[v]));
-        mesh.normals.push_back(normal);
-        mesh.radiosity.push_back(toFloat(value[v]));
-        mesh.reflectance.push_back(toFloat(key.reflectance));
-    }
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        for (int v : triangles[t])
-            mesh.indices.push_back(base + static_cast<uint32_t>(v));
-        mesh.triangleFace.push_back(triangleFace[t]);
-    }
+    radiosity.resize(vertices);
+    for (size_t v = 0; v < vertices; ++v)
+        radiosity[v] = toFloat(value[v]);
 }
 
-} // namespace
+LitMesh SmoothShading::litMesh(std::span<const Rgb> elementRadiosity) const
+{
+    LitMesh mesh = m_geometry;
+    shade(elementRadiosity, mesh.radiosity);
+    return mesh;
+}
 
 LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRadiosity,
                       const SmoothingOptions& options)
@@ -358,15 +417,7 @@ LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRa
     if (elementRadiosity.size() != scene.elements.size())
         throw std::invalid_argument("smoothLitMesh: " + std::to_string(elementRadiosity.size()) +
                                     " radiosity values for " + std::to_string(scene.elements.size()) + " elements");
-    LitMesh mesh;
-    for (const InputFace& f : scene.faces)
-        mesh.faceIds.push_back(f.id);
-    const Grouping groups = groupElements(scene);
-    for (size_t g = 0; g < groups.keys.size(); ++g) {
-        if (!groups.elements[g].empty())
-            smoothGroup(scene, elementRadiosity, groups.keys[g], groups.elements[g], options, mesh);
-    }
-    return mesh;
+    return SmoothShading(scene, options).litMesh(elementRadiosity);
 }
 
 LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth)

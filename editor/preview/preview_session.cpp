@@ -144,22 +144,17 @@ void PreviewSession::publish(bool running)
         }
         for (const solver::Region& r : prepared.regions)
             frame->regionIds.push_back(r.id);
-        // Smooth vertex radiosity costs about 5 us per element: on meshes that
-        // adaptive subdivision grew large it would space frames far beyond
-        // 250 ms, so while shooting such meshes show flat elements and only
-        // the final frame (paused, stopped, finished) is smooth.
-        // The estimate scales the last smooth build by the element count: a
-        // refinement round may have grown the mesh several times since.
-        const double elements = double(prepared.elements.size());
-        if (!running || m_smoothSecondsPerElement * elements < kSmoothBudgetSeconds) {
-            const auto smoothStart = std::chrono::steady_clock::now();
-            frame->lit = std::make_shared<output::LitMesh>(output::smoothLitMesh(prepared, radiosity));
-            if (elements > 0.0)
-                m_smoothSecondsPerElement = secondsSince(smoothStart) / elements;
-        } else {
-            frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(prepared, radiosity));
-            frame->smooth = false;
+        // Smooth vertex radiosity (§6) in every frame, so the view never
+        // switches between two looks: the welding and re-triangulation (about
+        // 5 us an element) are done once per mesh, and a frame only sums each
+        // vertex's elements. The mesh only grows (refinement rounds), so its
+        // element and vertex counts tell when it changed.
+        if (!m_shading || m_shading->elementCount() != prepared.elements.size() ||
+            m_shadedVertices != prepared.vertices.size()) {
+            m_shading = std::make_unique<output::SmoothShading>(prepared);
+            m_shadedVertices = prepared.vertices.size();
         }
+        frame->lit = std::make_shared<output::LitMesh>(m_shading->litMesh(radiosity));
     } else {
         frame->smooth = false;
         frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(frame->snapshot));

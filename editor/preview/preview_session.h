@@ -13,6 +13,7 @@
 #include "model/diagnostic.h"
 #include "model/scene.h"
 #include "output/lit_mesh.h"
+#include "output/vertex_radiosity.h"
 #include "solver/solver.h"
 
 #include <atomic>
@@ -62,7 +63,7 @@ public:
     struct Config {
         model::Scene scene;
         solver::SolverOptions options;
-        int publishIntervalMs = 120; // frames while shooting (the issue asks for <= 250 ms)
+        int publishIntervalMs = 100; // frames while shooting: ten a second
         bool startPaused = false;
     };
     using Notify = std::function<void(SessionEvent)>;
@@ -128,8 +129,9 @@ private:
     std::atomic<bool> m_exited{false};
     std::atomic<bool> m_framePending{false};
     std::chrono::steady_clock::time_point m_lastPublish;
-    static constexpr double kSmoothBudgetSeconds = 0.08;
-    double m_smoothSecondsPerElement = 0.0; // of the last smooth build (worker thread only)
+    // The smooth shading of the solver's current mesh (worker thread only).
+    std::unique_ptr<output::SmoothShading> m_shading;
+    size_t m_shadedVertices = 0;
     static inline std::atomic<int> s_live{0};
     std::thread m_thread; // last member: starts after everything above exists
 };

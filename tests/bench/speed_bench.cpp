@@ -35,6 +35,11 @@
 // --benchmark_filter). Rows are kept as in a solve (1 GiB), but 100 shots
 // of distinct patches render every one.
 //
+//   preview_frame    the editor's smooth frame of the 100 000-element
+//                    warehouse (output/vertex_radiosity.h): the shading built
+//                    once per mesh, and a frame (vertex values summed from the
+//                    element radiosity, the lit mesh copied), ten frames
+//
 //   prepare          the regional tree, BSP trees and meshing of a scene of
 //                    about 100 000 faces (the generator with 7300 objects on
 //                    a 130 m floor, automatic regions, patch size 1 m, one
@@ -43,6 +48,7 @@
 // Three repetitions each (one for the largest); the machine's load shows in
 // the spread, so read the medians the summary prints. Not a test: timings are
 // never pass/fail.
+#include "output/vertex_radiosity.h"
 #include "solver/solver.h"
 #include "support/furnished_room.h"
 #include "support/sample_scenes.h"
@@ -299,6 +305,55 @@ void prepare(benchmark::State& state)
     state.counters["regions"] = double(regions);
 }
 
+struct FrameFigures {
+    double buildMs = 0.0;
+    double frameMs = 0.0;
+    double elements = 0.0;
+};
+std::vector<FrameFigures>& frameMeasured()
+{
+    static std::vector<FrameFigures> m;
+    return m;
+}
+
+void previewFrame(benchmark::State& state)
+{
+    const model::Scene& scene = warehouse(100000);
+    const SolverOptions options = warehouseOptions(100000, true);
+    const model::SolverSettings settings = resolveSettings(scene.solver, options);
+    model::Result<PreparedScene> prepared = prepareScene(scene, prepareOptionsFor(settings));
+    if (!prepared.ok()) {
+        state.SkipWithError("the scene could not be prepared");
+        return;
+    }
+    // Some radiosity per element: the values do not change the cost.
+    std::vector<model::Rgb> radiosity(prepared->elements.size());
+    for (size_t e = 0; e < radiosity.size(); ++e)
+        radiosity[e] = model::Rgb(1.0 + 0.001 * double(e % 997));
+    FrameFigures fig;
+    fig.elements = double(prepared->elements.size());
+    using Clock = std::chrono::steady_clock;
+    for (auto _ : state) {
+        const auto start = Clock::now();
+        const output::SmoothShading shading(*prepared);
+        const auto built = Clock::now();
+        constexpr int kFrames = 10;
+        for (int f = 0; f < kFrames; ++f) {
+            radiosity[size_t(f)] *= 1.01; // a new solution each frame
+            const output::LitMesh mesh = shading.litMesh(radiosity);
+            benchmark::DoNotOptimize(mesh.radiosity.data());
+        }
+        const auto done = Clock::now();
+        fig.buildMs = 1000.0 * std::chrono::duration<double>(built - start).count();
+        fig.frameMs = 1000.0 * std::chrono::duration<double>(done - built).count() / kFrames;
+        state.SetIterationTime(std::chrono::duration<double>(done - start).count());
+    }
+    frameMeasured().push_back(fig);
+    state.counters["elements"] = fig.elements;
+    state.counters["build_ms"] = fig.buildMs;
+    state.counters["frame_ms"] = fig.frameMs;
+}
+
 void cornell(benchmark::State& state) { converge(state, sample("cornell-box"), "cornell-box"); }
 void twoLights(benchmark::State& state) { converge(state, sample("two-lights-room"), "two-lights-room"); }
 void furnishedRoom(benchmark::State& state) { converge(state, furnished(), "furnished room"); }
@@ -357,6 +412,12 @@ BENCHMARK(scale)
     ->UseManualTime()
     ->Iterations(1)
     ->Repetitions(1);
+BENCHMARK(previewFrame)
+    ->Name("preview_frame")
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Repetitions(3);
 BENCHMARK(prepare)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(3);
 
 int main(int argc, char** argv)
@@ -394,6 +455,17 @@ int main(int argc, char** argv)
             }
             std::printf("%-58s %11.2f %8.0f %14.1f %9.0f\n", key.c_str(), median(ms), regions, median(culled), peak);
         }
+    }
+    if (!frameMeasured().empty()) {
+        std::vector<double> build, frame;
+        for (const FrameFigures& f : frameMeasured()) {
+            build.push_back(f.buildMs);
+            frame.push_back(f.frameMs);
+        }
+        std::printf(
+            "\nThe preview's smooth frame, %.0f elements, medians: shading built in %.1f ms once per mesh, "
+            "a frame in %.1f ms\n",
+            frameMeasured().front().elements, median(build), median(frame));
     }
     if (!prepareMeasured().empty())
         std::printf("\nPreparation of the 100 000-face scene, median: %.3f s\n", median(prepareMeasured()));

@@ -412,3 +412,38 @@ TEST(VertexRadiosity, FurnishedRoomOutputIsTVertexFreeAndKeepsItsArea)
         area += triangleArea(mesh, t);
     EXPECT_NEAR(area, prepared.stats.area, 1e-6 * prepared.stats.area);
 }
+
+// The preview shades every frame of a solve with one SmoothShading built for
+// the mesh: shading other values must give what a fresh build gives.
+TEST(SmoothShading, OneShadingServesEveryRadiosityOfItsMesh)
+{
+    const PreparedScene prepared = prepare(test::furnishedRoom(7, 20), 0.5);
+    const std::vector<Rgb> first = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
+    const std::vector<Rgb> second =
+        elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 4.0 ? 0.5 : 7.0, 1.0, 2.0); });
+    SmoothingOptions extrapolating;
+    extrapolating.extrapolateBoundary = true;
+    SmoothingOptions smoothing;
+    smoothing.neighbourPasses = 2;
+    for (const SmoothingOptions& options : {SmoothingOptions{}, extrapolating, smoothing}) {
+        const SmoothShading shading(prepared, options);
+        EXPECT_EQ(shading.elementCount(), prepared.elements.size());
+        LitMesh mesh = shading.litMesh(first);
+        const LitMesh fresh = smoothLitMesh(prepared, first, options);
+        EXPECT_EQ(mesh.positions, fresh.positions);
+        EXPECT_EQ(mesh.indices, fresh.indices);
+        EXPECT_EQ(mesh.triangleFace, fresh.triangleFace);
+        EXPECT_EQ(mesh.radiosity, fresh.radiosity);
+        shading.shade(second, mesh.radiosity);
+        EXPECT_EQ(mesh.radiosity, smoothLitMesh(prepared, second, options).radiosity);
+        EXPECT_EQ(mesh.radiosity, shading.litMesh(second).radiosity);
+    }
+}
+
+TEST(SmoothShading, ShadingTheWrongValueCountIsRefused)
+{
+    const PreparedScene prepared = tJunctionFloor();
+    const SmoothShading shading(prepared);
+    std::vector<glm::vec3> out;
+    EXPECT_THROW(shading.shade(std::vector<Rgb>(prepared.elements.size() - 1, Rgb(1.0)), out), std::invalid_argument);
+}

@@ -155,6 +155,35 @@ private slots:
         QVERIFY(!runner.frame()->snapshot.radiosity.empty());
     }
 
+    void everyFrameWhileSolvingIsSmoothLikeTheFinalOne()
+    {
+        // Through refinement rounds that grow the mesh: each frame is the smooth
+        // vertex radiosity of its own mesh (welded: fewer vertices than the three
+        // corners of every element), never the flat element mesh.
+        PreviewRunner runner;
+        int frames = 0, meshes = 0, lastElements = -1;
+        bool allSmooth = true;
+        connect(&runner, &PreviewRunner::frameReady, this, [&] {
+            const std::shared_ptr<const PreviewFrame> f = runner.frame();
+            if (!f || !f->running)
+                return;
+            ++frames;
+            const int elements = f->snapshot.stats.elements;
+            meshes += elements != lastElements;
+            lastElements = elements;
+            allSmooth = allSmooth && f->smooth && f->lit->vertexCount() < 3 * f->snapshot.radiosity.size() &&
+                        f->lit->vertexCount() > 0;
+        });
+        runner.start(longSample());
+        QVERIFY(waitForState(runner, PreviewState::Running));
+        QTRY_VERIFY_WITH_TIMEOUT(meshes >= 3 && frames >= 10, 60000);
+        runner.stop();
+        QVERIFY(waitForState(runner, PreviewState::Finished, 5000));
+        QVERIFY(allSmooth);
+        QTRY_VERIFY(runner.frame() && !runner.frame()->running);
+        QVERIFY(runner.frame()->smooth);
+    }
+
     void pauseHoldsTheSolveAndResumeContinuesIt()
     {
         PreviewRunner runner;
