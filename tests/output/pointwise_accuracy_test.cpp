@@ -1,0 +1,224 @@
+// The lit mesh the editor shows, measured point by point against the
+// independent pointwise reference (tests/support/pointwise_reference.h) on
+// the Cornell box: the solver's own settings, solved to 0.1 % unshot, the
+// smooth vertex radiosity of paper §6 and the flat element values.
+//
+// The solver is right per face; its Gouraud-shaded picture is not right
+// everywhere: blotches in the open, light leaking at a block's foot, dark
+// rings along edges. The test prints the error statistics (the test log shows
+// them) and guards what holds today against regressions.
+#include "output/lit_mesh.h"
+#include "output/vertex_radiosity.h"
+#include "solver/solver.h"
+#include "support/lit_mesh_sampling.h"
+#include "support/pointwise_reference.h"
+#include "support/sample_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <vector>
+
+using namespace regio;
+using namespace regio::test;
+
+namespace {
+
+// Relative luminance errors of one picture, overall and beside contact lines.
+struct Sample {
+    const SurfacePoint* where = nullptr;
+    double reference = 0.0; // luminance, W/m^2
+    double shown = 0.0;
+    double error() const { return std::abs(shown - reference) / reference; }
+};
+
+struct Summary {
+    size_t count = 0;
+    double median = 0.0, p90 = 0.0, p99 = 0.0, worst = 0.0;
+};
+
+Summary summarize(const std::vector<Sample>& samples, bool contactOnly)
+{
+    std::vector<double> errors;
+    for (const Sample& s : samples) {
+        if (!contactOnly || s.where->kind == SurfacePoint::Kind::Contact)
+            errors.push_back(s.error());
+    }
+    Summary summary;
+    summary.count = errors.size();
+    if (errors.empty())
+        return summary;
+    std::sort(errors.begin(), errors.end());
+    const auto at = [&](double q) {
+        return errors[static_cast<size_t>(std::lround(q * static_cast<double>(errors.size() - 1)))];
+    };
+    summary.median = at(0.5);
+    summary.p90 = at(0.9);
+    summary.p99 = at(0.99);
+    summary.worst = errors.back();
+    return summary;
+}
+
+void print(const char* label, const Summary& s)
+{
+    std::printf("  %-24s %5zu points   median %6.2f %%   90th %6.2f %%   99th %6.2f %%   worst %7.2f %%\n", label,
+                s.count, 100.0 * s.median, 100.0 * s.p90, 100.0 * s.p99, 100.0 * s.worst);
+}
+
+void printWorst(const char* label, std::vector<Sample> samples, size_t count)
+{
+    std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.error() > b.error(); });
+    std::printf("  worst points, %s:\n", label);
+    const char* kinds[] = {"grid", "edge", "contact"};
+    for (size_t i = 0; i < std::min(count, samples.size()); ++i) {
+        const Sample& s = samples[i];
+        std::printf("    %-20s %-7s (%.4f, %.4f, %.4f)   shown %8.4f   reference %8.4f   %+7.1f %%\n",
+                    s.where->face.c_str(), kinds[static_cast<int>(s.where->kind)], s.where->point.x, s.where->point.y,
+                    s.where->point.z, s.shown, s.reference, 100.0 * (s.shown - s.reference) / s.reference);
+    }
+}
+
+double secondsBetween(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+{
+    return std::chrono::duration<double>(b - a).count();
+}
+
+} // namespace
+
+TEST(PointwiseAccuracy, LitMeshProbeInterpolatesTheTriangleOfTheFaceBarycentrically)
+{
+    output::LitMesh mesh;
+    mesh.faceIds = {"floor", "wall"};
+    const auto corner = [&](glm::vec3 p, float value) {
+        mesh.positions.push_back(p);
+        mesh.normals.push_back({0.0f, 1.0f, 0.0f});
+        mesh.radiosity.push_back(glm::vec3(value));
+        mesh.reflectance.push_back(glm::vec3(0.5f));
+        mesh.indices.push_back(static_cast<uint32_t>(mesh.positions.size() - 1));
+    };
+    corner({0, 0, 0}, 0.0f);
+    corner({0, 0, 1}, 1.0f);
+    corner({1, 0, 0}, 2.0f);
+    mesh.triangleFace.push_back(0);
+    const LitMeshProbe probe(mesh);
+    // (0.25, 0, 0.5): weights 0.25, 0.5, 0.25 of the corners.
+    const std::optional<Rgb> value = probe.displayRadiosityAt("floor", {0.25, 0.0, 0.5}, glm::vec3(0.0f));
+    ASSERT_TRUE(value.has_value());
+    EXPECT_NEAR(value->x, 0.5 * 1.0 + 0.25 * 2.0, 1e-6);
+    // The ambient term is weighted by the reflectance, as the display does.
+    EXPECT_NEAR(probe.displayRadiosityAt("floor", {0.25, 0.0, 0.5}, glm::vec3(2.0f))->x, 1.0 + 0.5 * 2.0, 1e-6);
+    EXPECT_FALSE(probe.displayRadiosityAt("floor", {0.8, 0.0, 0.8}, glm::vec3(0.0f)).has_value());
+    EXPECT_FALSE(probe.displayRadiosityAt("wall", {0.25, 0.0, 0.5}, glm::vec3(0.0f)).has_value());
+}
+
+TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
+{
+    using Clock = std::chrono::steady_clock;
+    const model::Scene scene = loadSample("cornell-box");
+
+    // The solver with the scene's own settings, to 0.1 % unshot.
+    const auto start = Clock::now();
+    solver::SolverOptions options;
+    options.maxIterations = 1000000;
+    options.convergence = 0.001;
+    auto built = solver::Solver::create(scene, options);
+    ASSERT_TRUE(built.ok());
+    solver::Solver& solver = **built;
+    const std::atomic<bool> cancel{false};
+    EXPECT_EQ(solver.run({}, cancel), solver::StopReason::Converged);
+    const solver::SolutionSnapshot snapshot = solver.snapshot();
+    const solver::PreparedScene& prepared = solver.prepared();
+    ASSERT_EQ(prepared.elements.size(), snapshot.radiosity.size());
+    const output::LitMesh smooth = output::smoothLitMesh(prepared, snapshot.radiosity);
+    const output::LitMesh flat = output::litMeshFromSolution(prepared, snapshot.radiosity);
+    const glm::vec3 ambient(snapshot.stats.ambient); // what is not shot yet, as the display adds it
+    const auto solved = Clock::now();
+
+    const PointwiseReference reference(scene);
+    const auto referenced = Clock::now();
+
+    // A 3 cm grid 1 cm inside every face, rows 1.5 cm inside every edge, and
+    // rows 1 and 2 cm beside the blocks' feet on the floor and on the blocks.
+    const std::vector<FaceGeometry> faces = faceGeometry(scene);
+    std::vector<SurfacePoint> candidates = gridPoints(faces, 0.03, 0.01);
+    for (const SurfacePoint& p : edgePoints(faces, 0.03, 0.015))
+        candidates.push_back(p);
+    for (const SurfacePoint& p : contactPoints(faces, 0.02, {0.01, 0.02}, 0.015))
+        candidates.push_back(p);
+    std::vector<SurfacePoint> points;
+    std::vector<GatherPoint> gather;
+    for (const SurfacePoint& p : candidates) {
+        const int face = reference.faceIndex(p.face);
+        ASSERT_GE(face, 0) << p.face;
+        if (reference.covered(face, p.point)) // the floor under a block
+            continue;
+        points.push_back(p);
+        gather.push_back({face, p.point});
+    }
+    const std::vector<Rgb> expected = reference.radiosityAt(gather);
+    const auto gathered = Clock::now();
+
+    const auto measure = [&](const output::LitMesh& mesh) {
+        const LitMeshProbe probe(mesh);
+        std::vector<Sample> samples;
+        for (size_t i = 0; i < points.size(); ++i) {
+            const std::optional<Rgb> shown = probe.displayRadiosityAt(points[i].face, points[i].point, ambient);
+            EXPECT_TRUE(shown.has_value())
+                << points[i].face << " " << points[i].point.x << " " << points[i].point.y << " " << points[i].point.z;
+            if (shown)
+                samples.push_back({&points[i], luminance(expected[i]), luminance(*shown)});
+        }
+        return samples;
+    };
+    const std::vector<Sample> smoothSamples = measure(smooth);
+    const std::vector<Sample> flatSamples = measure(flat);
+    const Summary smoothAll = summarize(smoothSamples, false), smoothContact = summarize(smoothSamples, true);
+    const Summary flatAll = summarize(flatSamples, false), flatContact = summarize(flatSamples, true);
+    const auto measured = Clock::now();
+
+    const size_t contacts = static_cast<size_t>(std::count_if(
+        points.begin(), points.end(), [](const SurfacePoint& p) { return p.kind == SurfacePoint::Kind::Contact; }));
+    std::printf(
+        "Cornell box: %d elements (%d shots), reference %zu patches (%d Gauss-Seidel sweeps), "
+        "%zu points (%zu beside contact lines)\n",
+        snapshot.stats.elements, snapshot.stats.iterations, reference.patches().size(), reference.iterations(),
+        points.size(), contacts);
+    std::printf("relative luminance error |shown - reference| / reference:\n");
+    print("smooth, all points", smoothAll);
+    print("smooth, contact lines", smoothContact);
+    print("flat, all points", flatAll);
+    print("flat, contact lines", flatContact);
+    printWorst("smooth", smoothSamples, 8);
+    printWorst("flat", flatSamples, 5);
+    std::printf("seconds: solve and lit meshes %.2f, reference %.2f, gather %.2f, lit mesh lookups %.2f\n",
+                secondsBetween(start, solved), secondsBetween(solved, referenced), secondsBetween(referenced, gathered),
+                secondsBetween(gathered, measured));
+    std::fflush(stdout);
+
+    ASSERT_GT(smoothAll.count, 2000u);
+    ASSERT_GT(smoothContact.count, 200u);
+    // Guards of what holds today, with some margin: the test fails when the
+    // picture gets worse. Measured when written (smooth): median 2.1 %, 90th
+    // percentile 11.4 %, 99th 45.5 %; beside contact lines median 15.2 %,
+    // 90th 42.6 %. Flat: median 4.1 %, 90th 18.5 %; beside contact lines
+    // median 17.6 %. The reference itself is good to about 1 % there
+    // (tests/support/pointwise_reference.h).
+    //
+    // The targets of the smooth picture, NOT MET YET: median <= 1 %, 90th
+    // percentile <= 3 %, 99th percentile <= 10 %, and beside contact lines
+    // 90th percentile <= 10 %. Tighten the bounds below as the picture
+    // improves.
+    EXPECT_LT(smoothAll.median, 0.035);
+    EXPECT_LT(smoothAll.p90, 0.15);
+    EXPECT_LT(smoothAll.p99, 0.60);
+    EXPECT_LT(smoothContact.median, 0.25);
+    EXPECT_LT(smoothContact.p90, 0.55);
+    EXPECT_LT(flatAll.median, 0.06);
+    EXPECT_LT(flatAll.p90, 0.25);
+    EXPECT_LT(flatContact.median, 0.25);
+}
