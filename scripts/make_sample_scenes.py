@@ -104,7 +104,7 @@ def mm(p):
 
 
 def cornell_box():
-    """The published Cornell box (shared/reference/cornell-box.md), in metres."""
+    """The published Cornell box (its measured geometry), in metres."""
     centre = mm([278, 274.4, 279.6])
     materials = [
         {"id": "white", "reflectance": [0.725, 0.71, 0.68], "emission": [0, 0, 0]},
