@@ -1,0 +1,186 @@
+// The error picture of docs/accuracy.md: where the smooth lit mesh that the
+// editor shows differs from the independent pointwise reference
+// (tests/support/pointwise_reference.h).
+//
+//   accuracy_pictures SCENE.json OUT.png [CELL_METRES]
+//
+// solves the scene with its own settings to 0.1 % unshot, cuts every face
+// into square cells (1 cm by default), gathers the reference at each cell's
+// centre, and renders the cells from the scene's camera in false colour: the
+// relative luminance error |shown - reference| / reference, 0 to 50 %
+// (larger errors take the end colour). Cells under a solid (the floor under
+// a block) are left out. Prints the error statistics of the cells.
+#include "model/io/scene_json.h"
+#include "output/false_colour.h"
+#include "output/legend_overlay.h"
+#include "output/png_writer.h"
+#include "output/software_render.h"
+#include "output/vertex_radiosity.h"
+#include "solver/solver.h"
+#include "support/lit_mesh_sampling.h"
+#include "support/pointwise_reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace regio;
+
+namespace {
+
+constexpr double kLargestShownError = 50.0; // percent: the top of the ramp
+
+struct Cell {
+    int face = -1; // index into the reference's faces
+    model::Vec3 centre{0.0};
+    model::Vec3 corners[4];
+};
+
+// Square cells of `size` over every face whose centre lies inside it.
+std::vector<Cell> cellsOf(const std::vector<test::FaceGeometry>& faces, const test::PointwiseReference& reference,
+                          double size)
+{
+    std::vector<Cell> cells;
+    for (const test::FaceGeometry& f : faces) {
+        const int face = reference.faceIndex(f.id);
+        if (face < 0)
+            continue;
+        const model::Vec3 u = glm::normalize(f.polygon[1] - f.polygon[0]);
+        const model::Vec3 v = glm::cross(f.normal, u);
+        double s0 = 1e300, s1 = -1e300, t0 = 1e300, t1 = -1e300;
+        for (const model::Vec3& p : f.polygon) {
+            s0 = std::min(s0, glm::dot(u, p - f.polygon[0]));
+            s1 = std::max(s1, glm::dot(u, p - f.polygon[0]));
+            t0 = std::min(t0, glm::dot(v, p - f.polygon[0]));
+            t1 = std::max(t1, glm::dot(v, p - f.polygon[0]));
+        }
+        for (double s = s0; s < s1; s += size) {
+            for (double t = t0; t < t1; t += size) {
+                Cell c;
+                c.face = face;
+                const model::Vec3 origin = f.polygon[0] + u * s + v * t;
+                c.centre = origin + (u + v) * (0.5 * size);
+                if (test::insideDistance(f, c.centre) <= 0.0 || reference.covered(face, c.centre))
+                    continue;
+                // Counter-clockwise around the face's normal (u, v, n is right-handed).
+                c.corners[0] = origin;
+                c.corners[1] = origin + u * size;
+                c.corners[2] = origin + (u + v) * size;
+                c.corners[3] = origin + v * size;
+                cells.push_back(c);
+            }
+        }
+    }
+    return cells;
+}
+
+double percentile(std::vector<double> v, double q)
+{
+    if (v.empty())
+        return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES]\n");
+        return 2;
+    }
+    const double cellSize = argc > 3 ? std::atof(argv[3]) : 0.01;
+    if (!(cellSize > 0.0)) {
+        std::fprintf(stderr, "the cell size must be a positive number of metres\n");
+        return 2;
+    }
+    model::Result<model::Scene> loaded = model::loadSceneFile(argv[1]);
+    if (!loaded.ok()) {
+        std::fprintf(stderr, "cannot read %s\n", argv[1]);
+        return 1;
+    }
+    const model::Scene& scene = *loaded;
+    if (!scene.camera) {
+        std::fprintf(stderr, "%s has no camera\n", argv[1]);
+        return 1;
+    }
+
+    solver::SolverOptions options;
+    options.maxIterations = 100000000;
+    options.convergence = 0.001;
+    auto built = solver::Solver::create(scene, options);
+    if (!built.ok()) {
+        std::fprintf(stderr, "the scene cannot be solved\n");
+        return 1;
+    }
+    const std::atomic<bool> cancel{false};
+    (*built)->run({}, cancel);
+    const solver::SolutionSnapshot snapshot = (*built)->snapshot();
+    const output::LitMesh lit = output::smoothLitMesh((*built)->prepared(), snapshot.radiosity);
+    const glm::vec3 ambient(snapshot.stats.ambient);
+    const test::LitMeshProbe probe(lit);
+
+    const test::PointwiseReference reference(scene);
+    const std::vector<test::FaceGeometry> faces = test::faceGeometry(scene);
+    const std::vector<Cell> cells = cellsOf(faces, reference, cellSize);
+    std::vector<test::GatherPoint> gather;
+    for (const Cell& c : cells)
+        gather.push_back({c.face, c.centre});
+    const std::vector<model::Rgb> expected = reference.radiosityAt(gather);
+
+    // One quad per cell carrying its error (percent) as a grey "radiosity",
+    // whose luminance is the error itself.
+    output::LitMesh picture;
+    for (const test::FaceGeometry& f : faces)
+        picture.faceIds.push_back(f.id);
+    std::vector<double> errors;
+    for (size_t i = 0; i < cells.size(); ++i) {
+        const Cell& c = cells[i];
+        const std::string& id = reference.faces()[static_cast<size_t>(c.face)].id;
+        const std::optional<model::Rgb> shown = probe.displayRadiosityAt(id, c.centre, ambient);
+        const double truth = test::luminance(expected[i]);
+        if (!shown || truth <= 0.0)
+            continue;
+        const double error = 100.0 * std::abs(test::luminance(*shown) - truth) / truth;
+        errors.push_back(error);
+        const auto base = static_cast<uint32_t>(picture.positions.size());
+        const model::Vec3& n = reference.faces()[static_cast<size_t>(c.face)].normal;
+        for (const model::Vec3& corner : c.corners) {
+            picture.positions.emplace_back(corner);
+            picture.normals.emplace_back(n);
+            picture.radiosity.emplace_back(static_cast<float>(error));
+            picture.reflectance.emplace_back(0.0f);
+        }
+        for (uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u})
+            picture.indices.push_back(base + k);
+        picture.triangleFace.push_back(c.face);
+        picture.triangleFace.push_back(c.face);
+    }
+
+    const output::FalseColour ramp(output::FalseColourScale::Linear, 0.0, kLargestShownError);
+    const output::DisplayColours colours =
+        output::falseColours(picture, ramp, glm::vec3(0.0f), output::DisplayEncoding{});
+    output::RenderOptions render;
+    render.width = 800;
+    render.height = 600;
+    output::Image image = output::renderImage(picture, colours, *scene.camera, render);
+    output::FalseColourLegend legend = ramp.legend();
+    legend.quantity = "|error|";
+    legend.unit = "%";
+    output::drawLegend(image, legend);
+    if (const model::Check written = output::writePng(argv[2], image); !written.ok()) {
+        std::fprintf(stderr, "cannot write %s\n", argv[2]);
+        return 1;
+    }
+    std::printf("%zu cells of %.3f m: median %.2f %%, 90th %.2f %%, 99th %.2f %%, worst %.1f %% -> %s\n", errors.size(),
+                cellSize, percentile(errors, 0.5), percentile(errors, 0.9), percentile(errors, 0.99),
+                percentile(errors, 1.0), argv[2]);
+    return 0;
+}
