@@ -53,13 +53,7 @@ std::vector<Cell> cellsOf(const std::vector<test::FaceGeometry>& faces, const te
             continue;
         const model::Vec3 u = glm::normalize(f.polygon[1] - f.polygon[0]);
         const model::Vec3 v = glm::cross(f.normal, u);
-        double s0 = 1e300, s1 = -1e300, t0 = 1e300, t1 = -1e300;
-        for (const model::Vec3& p : f.polygon) {
-            s0 = std::min(s0, glm::dot(u, p - f.polygon[0]));
-            s1 = std::max(s1, glm::dot(u, p - f.polygon[0]));
-            t0 = std::min(t0, glm::dot(v, p - f.polygon[0]));
-            t1 = std::max(t1, glm::dot(v, p - f.polygon[0]));
-        }
+        const auto [s0, s1, t0, t1] = test::extentAlong(f, u, v);
         for (double s = s0; s < s1; s += size) {
             for (double t = t0; t < t1; t += size) {
                 Cell c;

@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -66,6 +67,20 @@ inline double insideDistance(const FaceGeometry& face, const model::Vec3& p)
     return nearest;
 }
 
+// The face's extent along two in-plane directions, from its first corner:
+// {min along u, max along u, min along v, max along v}.
+inline std::array<double, 4> extentAlong(const FaceGeometry& face, const model::Vec3& u, const model::Vec3& v)
+{
+    std::array<double, 4> e{1e300, -1e300, 1e300, -1e300};
+    for (const model::Vec3& p : face.polygon) {
+        e[0] = std::min(e[0], glm::dot(u, p - face.polygon[0]));
+        e[1] = std::max(e[1], glm::dot(u, p - face.polygon[0]));
+        e[2] = std::min(e[2], glm::dot(v, p - face.polygon[0]));
+        e[3] = std::max(e[3], glm::dot(v, p - face.polygon[0]));
+    }
+    return e;
+}
+
 struct SurfacePoint {
     enum class Kind { Grid, Edge, Contact };
     std::string face; // face id
@@ -87,13 +102,7 @@ inline std::vector<SurfacePoint> gridPoints(const std::vector<FaceGeometry>& fac
         }
         const model::Vec3 u = glm::normalize(longest);
         const model::Vec3 v = glm::cross(f.normal, u);
-        double s0 = 1e300, s1 = -1e300, t0 = 1e300, t1 = -1e300;
-        for (const model::Vec3& p : f.polygon) {
-            s0 = std::min(s0, glm::dot(u, p - f.polygon[0]));
-            s1 = std::max(s1, glm::dot(u, p - f.polygon[0]));
-            t0 = std::min(t0, glm::dot(v, p - f.polygon[0]));
-            t1 = std::max(t1, glm::dot(v, p - f.polygon[0]));
-        }
+        const auto [s0, s1, t0, t1] = extentAlong(f, u, v);
         const int ns = static_cast<int>(std::floor((s1 - s0) / spacing)) + 1;
         const int nt = static_cast<int>(std::floor((t1 - t0) / spacing)) + 1;
         const double sStart = s0 + 0.5 * ((s1 - s0) - (ns - 1) * spacing);
