@@ -2,6 +2,7 @@
 // planes exactly where their faces were cut, without loss and without cracks.
 #include "solver/prepare/pieces.h"
 #include "solver/prepare/prepare.h"
+#include "support/prepared_scenes.h"
 #include "support/sample_scenes.h"
 #include "support/solver_test_scenes.h"
 
@@ -25,9 +26,7 @@ PreparedScene prepare(const model::Scene& scene, RegionsMode mode)
     PrepareOptions options;
     options.regions = mode;
     options.autoRegionPatchThreshold = 100;
-    model::Result<PreparedScene> r = prepareScene(scene, options);
-    EXPECT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics()[0].message);
-    return r.ok() ? std::move(*r) : PreparedScene{};
+    return test::prepared(scene, options);
 }
 
 struct NamedScene {

@@ -5,6 +5,7 @@
 #include "solver/visibility/hemicube_renderer.h"
 #include "support/adaptive_scenes.h"
 #include "support/furnished_room.h"
+#include "support/prepared_scenes.h"
 #include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
@@ -17,15 +18,6 @@ using namespace regio;
 using namespace regio::solver;
 
 namespace {
-
-PreparedScene prepare(const model::Scene& scene, RegionsMode regions = RegionsMode::Authored)
-{
-    PrepareOptions options;
-    options.regions = regions;
-    model::Result<PreparedScene> r = prepareScene(scene, options);
-    EXPECT_TRUE(r.ok());
-    return r.ok() ? std::move(*r) : PreparedScene{};
-}
 
 // Renders every `stride`-th patch with 1, 2, 3 and 5 threads, split either
 // way, and compares the whole item buffers and the statistics.
@@ -61,14 +53,14 @@ void expectSameForAnyThreadCount(const PreparedScene& p, model::Visibility mode,
 
 TEST(HemicubeRenderer, PaintsTheSampleRoomAsOneThreadDoesInBothModes)
 {
-    const PreparedScene p = prepare(test::loadSample("two-lights-room"));
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
     expectSameForAnyThreadCount(p, model::Visibility::Painter, 100, 7);
     expectSameForAnyThreadCount(p, model::Visibility::ZBuffer, 100, 7);
 }
 
 TEST(HemicubeRenderer, PaintsAFurnishedRoomWithManyRegionsAsOneThreadDoes)
 {
-    const PreparedScene p = prepare(test::furnishedRoom(12, 20), RegionsMode::Auto);
+    const PreparedScene p = test::prepared(test::furnishedRoom(12, 20), RegionsMode::Auto);
     ASSERT_GT(p.regions.size(), 1u);
     expectSameForAnyThreadCount(p, model::Visibility::Painter, 64, p.patches.size() / 12);
 }
@@ -78,23 +70,22 @@ TEST(HemicubeRenderer, PaintsAsOneThreadDoesWhenThreadsOutnumberThePieces)
     PrepareOptions options;
     options.patchSize = 100.0; // one patch and one element per face
     options.elementsPerPatch = 1;
-    model::Result<PreparedScene> p = prepareScene(test::closedRoom(), options);
-    ASSERT_TRUE(p.ok());
-    ASSERT_LT(p->pieces.size(), 5u * HemicubeRenderer::kMaxThreads);
+    const PreparedScene p = test::prepared(test::closedRoom(), options);
+    ASSERT_LT(p.pieces.size(), 5u * HemicubeRenderer::kMaxThreads);
     const Hemicube h(32);
-    HemicubeRenderer one(*p, h, model::Visibility::Painter, 1);
-    HemicubeRenderer many(*p, h, model::Visibility::Painter, HemicubeRenderer::kMaxThreads);
+    HemicubeRenderer one(p, h, model::Visibility::Painter, 1);
+    HemicubeRenderer many(p, h, model::Visibility::Painter, HemicubeRenderer::kMaxThreads);
     ItemBuffer a = one.makeBuffer(), b = many.makeBuffer();
-    for (size_t i = 0; i < p->patches.size(); ++i) {
-        ASSERT_TRUE(one.render(shooterFrameOfPatch(*p, static_cast<int>(i)), a));
-        ASSERT_TRUE(many.render(shooterFrameOfPatch(*p, static_cast<int>(i)), b));
+    for (size_t i = 0; i < p.patches.size(); ++i) {
+        ASSERT_TRUE(one.render(shooterFrameOfPatch(p, static_cast<int>(i)), a));
+        ASSERT_TRUE(many.render(shooterFrameOfPatch(p, static_cast<int>(i)), b));
         ASSERT_TRUE(std::ranges::equal(a.all(), b.all())) << "patch " << i;
     }
 }
 
 TEST(HemicubeRenderer, TimesBothSplitsAlternatelyThenKeepsOne)
 {
-    const PreparedScene p = prepare(test::loadSample("two-lights-room"));
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
     const Hemicube h(64);
     HemicubeRenderer r(p, h, model::Visibility::Painter, 2);
     ItemBuffer b = r.makeBuffer();
@@ -114,7 +105,7 @@ TEST(HemicubeRenderer, TimesBothSplitsAlternatelyThenKeepsOne)
 
 TEST(HemicubeRenderer, UsesAtMostItsMostThreads)
 {
-    const PreparedScene p = prepare(test::loadSample("cornell-box"));
+    const PreparedScene p = test::prepared(test::loadSample("cornell-box"));
     const Hemicube h(32);
     EXPECT_EQ(HemicubeRenderer(p, h, model::Visibility::Painter, 64).threads(), HemicubeRenderer::kMaxThreads);
     EXPECT_GE(HemicubeRenderer(p, h, model::Visibility::Painter, 0).threads(), 1);
@@ -124,7 +115,7 @@ TEST(HemicubeRenderer, UsesAtMostItsMostThreads)
 
 TEST(HemicubeRenderer, ACancelledRenderReportsItOnEveryThreadCount)
 {
-    const PreparedScene p = prepare(test::loadSample("two-lights-room"));
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
     const Hemicube h(64);
     const std::atomic<bool> cancel{true};
     for (int threads : {1, 2, 5}) {

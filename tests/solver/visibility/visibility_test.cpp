@@ -3,6 +3,7 @@
 #include "solver/prepare/prepare.h"
 #include "solver/solver.h"
 #include "solver/visibility/visibility.h"
+#include "support/prepared_scenes.h"
 #include "support/solver_test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -15,15 +16,6 @@ using namespace regio;
 using namespace regio::solver;
 
 namespace {
-
-PreparedScene prepare(const model::Scene& scene, RegionsMode mode = RegionsMode::Authored)
-{
-    PrepareOptions options;
-    options.regions = mode;
-    model::Result<PreparedScene> r = prepareScene(scene, options);
-    EXPECT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics()[0].message);
-    return r.ok() ? std::move(*r) : PreparedScene{};
-}
 
 // True if the 3 x 3 neighbourhood of (x, y) in `b` holds more than one id.
 bool edgePixel(const ItemBuffer& b, HemicubeFace f, int x, int y)
@@ -73,7 +65,7 @@ TEST(Visibility, AFullHemicubeInsideAClosedRoomSumsToOnePerShooter)
     test::addBox(scene, "room", {0, 0, 0}, {4, 2.5, 3}, "grey", true);
     test::addBox(scene, "block", {1, 0, 1}, {2, 1.2, 1.8}, "grey");
     test::addBox(scene, "shelf", {2.5, 1.5, 0.5}, {3.5, 1.6, 2.5}, "grey"); // floating
-    const PreparedScene p = prepare(scene);
+    const PreparedScene p = test::prepared(scene);
     Hemicube h(100);
     for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
@@ -104,7 +96,7 @@ TEST(Visibility, PainterItemBuffersEqualZBufferItemBuffersExceptOnEdgePixels)
     Hemicube h(150);
     for (unsigned seed : {1u, 2u, 3u, 4u}) {
         const model::Scene scene = test::randomRegionScene(seed, 3, 2);
-        const PreparedScene p = prepare(scene);
+        const PreparedScene p = test::prepared(scene);
         ASSERT_EQ(p.regions.size(), 6u);
         Visibility painter(p, h, model::Visibility::Painter);
         Visibility zbuffer(p, h, model::Visibility::ZBuffer);
@@ -153,7 +145,7 @@ TEST(Visibility, PainterAndZBufferSolutionsAgreePerFaceWithinHalfAPercent)
 TEST(Visibility, RegionsBehindTheShooterPlaneAreCulledWhole)
 {
     const model::Scene scene = test::randomRegionScene(1, 2, 1);
-    const PreparedScene p = prepare(scene);
+    const PreparedScene p = test::prepared(scene);
     Hemicube h(50);
     Visibility painter(p, h, model::Visibility::Painter);
     ItemBuffer buffer = painter.makeBuffer();
@@ -174,7 +166,7 @@ TEST(Visibility, BackFacingElementsArePaintedAsBlockers)
     test::addMaterial(scene, "grey", {0.5, 0.5, 0.5});
     test::addBox(scene, "cover", {-1, 0, -1}, {1, 1, 1}, "grey", false, {"ny"});
     test::addPolygon(scene, "floor", {{-0.2, 0, -0.2}, {-0.2, 0, 0.2}, {0.2, 0, 0.2}, {0.2, 0, -0.2}}, "grey");
-    const PreparedScene p = prepare(scene);
+    const PreparedScene p = test::prepared(scene);
     Hemicube h(40);
     for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
@@ -192,7 +184,7 @@ TEST(Visibility, BackFacingElementsArePaintedAsBlockers)
 TEST(Visibility, ACancelledRenderStopsEarly)
 {
     const model::Scene scene = test::randomRegionScene(3, 3, 3);
-    const PreparedScene p = prepare(scene);
+    const PreparedScene p = test::prepared(scene);
     Hemicube h(50);
     for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
         Visibility vis(p, h, mode);
