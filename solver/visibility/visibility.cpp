@@ -45,7 +45,7 @@ void Visibility::prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces)
         if (!(m_faces & (1u << f)))
             m_otherFaceBits |= faceOutcodeBits(f);
     // Every paint takes a new stamp below, so the cached projections are
-    // always those of this paint's faces.
+    // always those of the faces it paints.
     const size_t count = m_scene.pieceVertices.size();
     if (m_stamp.size() != count) {
         m_local.resize(count);
@@ -70,10 +70,10 @@ inline void Visibility::touch(int vertex)
     const std::uint32_t code = hemicubeOutcode(local);
     m_local[v] = local;
     m_outcode[v] = code;
-    // Project once per shooter onto the faces whose frustum holds the vertex
-    // (one, or two on a border): elements inside a face then skip projection.
+    // Project once per paint onto the painted faces whose frustum holds the
+    // vertex (one, or two on a border): elements inside a face then skip
+    // projection.
     FixedVertex* projected = &m_projected[v * kHemicubeFaceCount];
-    // (Only onto this visibility's own faces.)
     for (int f = 0; f < kHemicubeFaceCount; ++f)
         if ((m_faces & (1u << f)) && !(code & faceOutcodeBits(f)))
             projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
