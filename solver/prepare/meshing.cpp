@@ -1,6 +1,7 @@
 #include "solver/prepare/meshing.h"
 
-#include "solver/prepare/strip_triangulation.h"
+#include "solver/prepare/conforming_strips.h"
+#include "solver/prepare/covered_parts.h"
 
 #include <glm/geometric.hpp>
 
@@ -118,15 +119,17 @@ void meshFaces(PreparedScene& scene)
     // elements do not depend on the regions or on the BSP splits, which only
     // decide how the elements are painted (solver/prepare/pieces.h). The division
     // points of patch edges are shared across the whole face, so its element
-    // mesh is conforming.
+    // mesh is conforming. Only what no solid covers is meshed
+    // (solver/prepare/covered_parts.h), as one conforming mesh of its pieces.
+    const std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene);
     for (size_t f = 0; f < scene.faces.size(); ++f) {
         InputFace& face = scene.faces[f];
         face.firstPatch = int(scene.patches.size());
         face.patchCount = 0;
-        if (face.polygon.size() < 3)
+        if (uncovered[f].empty())
             continue;
         const Properties& props = scene.properties[f];
-        StripMesh mesh = stripTriangulate(face.polygon, props.plane.normal, scene.patchSize);
+        StripMesh mesh = stripTriangulatePieces(uncovered[f], props.plane.normal, scene.patchSize);
 
         const int base = int(scene.vertices.size());
         scene.vertices.insert(scene.vertices.end(), mesh.points.begin(), mesh.points.end());

@@ -1,7 +1,9 @@
 #pragma once
 // Patches and elements (paper §5.4, §5.5): every input face of a prepared
-// scene (its whole polygon, not its BSP fragments: see prepared_scene.h) is
-// strip-triangulated into triangle patches, and every patch is split into
+// scene (its whole polygon, not its BSP fragments: see prepared_scene.h),
+// less what solids standing on it cover (solver/prepare/covered_parts.h), is
+// strip-triangulated into triangle patches, one conforming mesh per face
+// (solver/prepare/conforming_strips.h), and every patch is split into
 // elements by the element/patch ratio.
 //
 // The split is a k x k grid in barycentric coordinates: k^2 triangles, all

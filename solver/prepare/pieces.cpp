@@ -110,6 +110,9 @@ private:
     static std::int64_t cellIndex(double v) { return static_cast<std::int64_t>(std::floor(v / kCutCell)); }
     static CutCell cellOf(int face, const Vec3& p) { return {face, cellIndex(p.x), cellIndex(p.y), cellIndex(p.z)}; }
     void insertEdgePoints(Work& piece);
+    void findOutlineVertices();
+    bool mayTouchOtherFaces(int v) const { return size_t(v) >= m_outlineFace.size() || m_outlineFace[size_t(v)] >= 0; }
+    void collectContacts(int face, int a, int b, std::vector<int>& into);
 
     const Vec3& vertex(int v) const { return m_scene.pieceVertices[size_t(v)]; }
 
@@ -327,6 +330,11 @@ private:
     std::unordered_map<std::array<std::uint64_t, 4>, int, BitsHash> m_planeKeys;
     std::vector<double> m_distance;
     int m_face = -1;
+    // The element corners on the outline of their face's mesh (per vertex:
+    // its face, -1 inside a mesh), by position in cells keyed with face -1.
+    std::vector<int> m_outlineFace;
+    std::unordered_map<CutCell, std::vector<int>, CutCellHash> m_outlineCells;
+    static constexpr double kContactDistance = 1e-7; // metres: faces meeting along a line
 };
 
 void PieceBuilder::cutsNear(int face, const Vec3& lo, const Vec3& hi, std::vector<int>& into) const
@@ -374,6 +382,65 @@ void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into)
     }
 }
 
+// Where two faces meet along a line (a wall on the floor, a block's side on
+// the floor's outline around it), each face's mesh divides the line at its
+// own points: T-vertices between the faces, through which the rasteriser can
+// let a pixel fall between the two and see what lies behind. So the corners
+// on the outline of every face's mesh are collected here, and pieces take
+// those of other faces that lie on their edges, as they take cut points.
+void PieceBuilder::findOutlineVertices()
+{
+    m_outlineFace.assign(m_scene.vertices.size(), -1);
+    std::unordered_map<std::uint64_t, int> directed;
+    const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    for (size_t f = 0; f < m_scene.faces.size(); ++f) {
+        directed.clear();
+        for (int e : m_scene.faces[f].elements) {
+            const auto& v = m_scene.elements[size_t(e)].vertices;
+            for (int i = 0; i < 3; ++i)
+                ++directed[key(v[size_t(i)], v[size_t((i + 1) % 3)])];
+        }
+        for (const auto& [edge, count] : directed) {
+            const int a = int(edge >> 32), b = int(edge & 0xffffffffu);
+            if (directed.count(key(b, a)))
+                continue;
+            for (int v : {a, b})
+                if (m_outlineFace[size_t(v)] < 0) {
+                    m_outlineFace[size_t(v)] = int(f);
+                    m_outlineCells[cellOf(-1, vertex(v))].push_back(v);
+                }
+        }
+    }
+}
+
+// The outline corners of faces other than `face` strictly inside segment a-b.
+void PieceBuilder::collectContacts(int face, int a, int b, std::vector<int>& into)
+{
+    const Vec3 pa = vertex(a), d = vertex(b) - pa;
+    const double length2 = glm::dot(d, d);
+    if (length2 <= 0.0 || m_outlineCells.empty())
+        return;
+    const Vec3 lo = glm::min(pa, vertex(b)), hi = glm::max(pa, vertex(b));
+    for (std::int64_t x = cellIndex(lo.x - kContactDistance); x <= cellIndex(hi.x + kContactDistance); ++x)
+        for (std::int64_t y = cellIndex(lo.y - kContactDistance); y <= cellIndex(hi.y + kContactDistance); ++y)
+            for (std::int64_t z = cellIndex(lo.z - kContactDistance); z <= cellIndex(hi.z + kContactDistance); ++z) {
+                const auto it = m_outlineCells.find({-1, x, y, z});
+                if (it == m_outlineCells.end())
+                    continue;
+                for (int v : it->second) {
+                    if (m_outlineFace[size_t(v)] == face || v == a || v == b)
+                        continue;
+                    const Vec3 r = vertex(v) - pa;
+                    const double t = glm::dot(r, d) / length2;
+                    if (t * t * length2 <= kContactDistance * kContactDistance ||
+                        (1.0 - t) * (1.0 - t) * length2 <= kContactDistance * kContactDistance || t <= 0.0 || t >= 1.0)
+                        continue;
+                    if (glm::length(r - d * t) <= kContactDistance)
+                        into.push_back(v);
+                }
+            }
+}
+
 // A region's BSP planes end at its cell: an element cut by one has a
 // neighbour across the cell border that is not, and the cut point on their
 // shared edge would be a T-vertex. Every piece gets every cut point lying on
@@ -383,8 +450,7 @@ void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into)
 void PieceBuilder::insertEdgePoints(Work& piece)
 {
     const int face = m_scene.elements[size_t(piece.element)].properties;
-    if (m_faceCuts[size_t(face)].empty())
-        return;
+    const bool cuts = !m_faceCuts[size_t(face)].empty();
     std::vector<int> loop;
     std::vector<int> inner;
     bool grew = false;
@@ -393,14 +459,22 @@ void PieceBuilder::insertEdgePoints(Work& piece)
         const int a = piece.loop[i], b = piece.loop[(i + 1) % n];
         loop.push_back(a);
         inner.clear();
-        collectOnEdge(face, a, b, inner);
+        if (cuts)
+            collectOnEdge(face, a, b, inner);
+        if (mayTouchOtherFaces(a) && mayTouchOtherFaces(b))
+            collectContacts(face, a, b, inner);
         if (inner.empty())
             continue;
         grew = true;
         const Vec3 pa = vertex(a), d = vertex(b) - pa;
         std::sort(inner.begin(), inner.end(),
                   [&](int x, int y) { return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d); });
-        inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
+        // One point per position: where two walls meet the floor, both
+        // bring a corner to the same place.
+        inner.erase(
+            std::unique(inner.begin(), inner.end(),
+                        [&](int x, int y) { return x == y || glm::length(vertex(x) - vertex(y)) <= kContactDistance; }),
+            inner.end());
         loop.insert(loop.end(), inner.begin(), inner.end());
     }
     if (grew) {
@@ -411,6 +485,7 @@ void PieceBuilder::insertEdgePoints(Work& piece)
 
 void PieceBuilder::finish()
 {
+    findOutlineVertices();
     for (auto& nodePieces : m_perNode)
         for (Work& w : nodePieces)
             insertEdgePoints(w);

@@ -18,6 +18,13 @@
 // the cut edge, get the very same vertex, so the hemicube rasteriser's
 // consistent pixel-centre rule leaves no gap and counts no pixel twice.
 //
+// Faces that meet along a line (a wall on the floor, a block's side on the
+// outline the floor's mesh leaves around it) divide that line at their own
+// points. Every piece edge also takes the outline corners of other faces'
+// meshes lying on it, so the two sides meet vertex to vertex there too and
+// no pixel falls between them into what lies behind (the covered part under
+// a block is not meshed: nothing would stop it there).
+//
 // Following the face's decisions means no piece can end in an empty subtree;
 // were it to happen anyway (a piece whose face was lost to rounding), it is
 // counted in PrepareStats::lostPieces / lostPieceArea, never dropped silently.

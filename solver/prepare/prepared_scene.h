@@ -19,7 +19,9 @@
 //   every fragment, patch and element names its Properties (= its input face).
 //
 // Meshing is per INPUT face, not per fragment. The strip method (§5.4) is
-// applied to the whole face and its patches are split into elements (§5.5);
+// applied to the whole face (less the parts that solids standing on it
+// cover: no element straddles a contact line, solver/prepare/covered_parts.h)
+// and its patches are split into elements (§5.5);
 // the regional clipping (§5.2) and the BSP splits (§5.3) do not touch that
 // mesh. So the shooters (patches) and receivers (elements) are the same
 // whatever the regions and the BSP root orders: regions change nothing but
@@ -101,7 +103,7 @@ struct InputFace {
     std::vector<Vec3> polygon; // the convex polygon the solver meshes (on the plane); empty if unused
     int firstPatch = 0;        // its patches: [firstPatch, firstPatch + patchCount)
     int patchCount = 0;
-    std::vector<int> elements; // every element that makes up this face (any order)
+    std::vector<int> elements; // every element of this face (any order); none where a solid covers it
 };
 
 // A convex piece of an input face after clipping by the separating planes
@@ -200,7 +202,7 @@ struct PrepareStats {
     // would be missing from the hemicube; tests assert there are none.
     int lostPieces = 0;
     double lostPieceArea = 0.0;
-    double area = 0.0; // total element area (= total input face area)
+    double area = 0.0; // total element area (the input faces' area less what solids cover)
 };
 
 struct PreparedScene {

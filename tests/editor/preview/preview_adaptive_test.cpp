@@ -190,6 +190,7 @@ private slots:
         const int loose = elementsAfter(6);
         threshold->setValue(0.02);
         const int strict = elementsAfter(6);
+        const size_t anchoredStrict = preview->runner()->frame()->snapshot.mesh->anchoredTriangles.size();
         qInfo("threshold 0.5: %d elements, 0.02: %d elements after 6 shots", loose, strict);
         QVERIFY(loose > 0);
         QVERIFY(strict > loose);
@@ -207,7 +208,7 @@ private slots:
         const int unanchored = elementsAfter(6);
         QVERIFY(preview->runner()->frame()->snapshot.mesh->anchoredTriangles.empty());
         qInfo("anchoring off: %d elements, on: %d", unanchored, strict);
-        QVERIFY(unanchored != strict);
+        QVERIFY(anchoredStrict > 0); // the solve with anchoring on was anchored; this one is not
         QVERIFY(window->document()->undoStack()->count() > commands);
 
         // Undo through the dock's commands brings the anchored solve back.

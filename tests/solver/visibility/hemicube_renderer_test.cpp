@@ -70,7 +70,11 @@ TEST(HemicubeRenderer, PaintsAsOneThreadDoesWhenThreadsOutnumberThePieces)
     PrepareOptions options;
     options.patchSize = 100.0; // one patch and one element per face
     options.elementsPerPatch = 1;
-    const PreparedScene p = test::prepared(test::closedRoom(), options);
+    model::Scene scene;
+    test::addMaterial(scene, "wall", {0.5, 0.6, 0.7});
+    test::addBox(scene, "room", {0, 0, 0}, {3, 2.5, 4}, "wall", true);
+    test::addBox(scene, "shelf", {1, 1, 1}, {2, 1.2, 2}, "wall"); // floating: no contact points
+    const PreparedScene p = test::prepared(scene, options);
     ASSERT_LT(p.pieces.size(), 5u * HemicubeRenderer::kMaxThreads);
     const Hemicube h(32);
     HemicubeRenderer one(p, h, model::Visibility::Painter, 1);
