@@ -135,44 +135,65 @@ double worstAngle(const std::vector<Vec3>& points, const Triangle& t)
 // smaller of their smallest angles. The fans that close T-vertices leave
 // thin triangles where the points of two pieces nearly meet; the flips
 // widen them. The outline (the face's and the covers') is never crossed.
-void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& triangles, const Vec3& normal)
+void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& triangles, const Vec3& normal,
+                    const std::vector<char>& touchedPoint)
 {
     const auto ccw = [&](int a, int b, int c) {
         return glm::dot(glm::cross(points[size_t(b)] - points[size_t(a)], points[size_t(c)] - points[size_t(a)]),
                         normal) > 0.0;
     };
-    for (int pass = 0; pass < 32; ++pass) {
-        std::unordered_map<std::uint64_t, std::pair<int, int>> edgeOwner; // directed edge -> (triangle, corner)
-        const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
-        for (size_t t = 0; t < triangles.size(); ++t)
-            for (int i = 0; i < 3; ++i)
-                edgeOwner[key(triangles[t][size_t(i)], triangles[t][size_t((i + 1) % 3)])] = {int(t), i};
-        std::vector<char> touched(triangles.size(), 0);
-        int flips = 0;
-        for (size_t t = 0; t < triangles.size(); ++t)
-            for (int i = 0; i < 3 && !touched[t]; ++i) {
-                const int a = triangles[t][size_t(i)], b = triangles[t][size_t((i + 1) % 3)];
-                const int c = triangles[t][size_t((i + 2) % 3)];
-                const auto other = edgeOwner.find(key(b, a));
-                if (other == edgeOwner.end() || touched[size_t(other->second.first)])
+    const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    std::unordered_map<std::uint64_t, int> owner; // directed edge -> its triangle
+    owner.reserve(triangles.size() * 3);
+    const auto own = [&](int t) {
+        for (int i = 0; i < 3; ++i)
+            owner[key(triangles[size_t(t)][size_t(i)], triangles[size_t(t)][size_t((i + 1) % 3)])] = t;
+    };
+    // Only around the points the fans and collapses touched: elsewhere the
+    // strips are as the strip method made them.
+    std::vector<int> active;
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        own(int(t));
+        const Triangle& tri = triangles[t];
+        if (touchedPoint[size_t(tri[0])] || touchedPoint[size_t(tri[1])] || touchedPoint[size_t(tri[2])])
+            active.push_back(int(t));
+    }
+    for (int pass = 0; pass < 32 && !active.empty(); ++pass) {
+        std::vector<int> next;
+        for (int t : active)
+            for (int i = 0; i < 3; ++i) {
+                const Triangle tri = triangles[size_t(t)];
+                const int a = tri[size_t(i)], b = tri[size_t((i + 1) % 3)], c = tri[size_t((i + 2) % 3)];
+                const auto other = owner.find(key(b, a));
+                if (other == owner.end())
                     continue;
-                const Triangle& u = triangles[size_t(other->second.first)];
-                const int d = u[size_t((other->second.second + 2) % 3)];
+                const int o = other->second;
+                const Triangle& u = triangles[size_t(o)];
+                int d = -1;
+                for (int k = 0; k < 3; ++k)
+                    if (u[size_t(k)] != a && u[size_t(k)] != b)
+                        d = u[size_t(k)];
                 // Convex: the new diagonal c-d has a and b on either side.
-                if (!ccw(c, a, d) || !ccw(d, b, c))
+                if (d < 0 || !ccw(c, a, d) || !ccw(d, b, c))
                     continue;
                 const Triangle first{c, a, d}, second{d, b, c};
-                const double before = std::min(worstAngle(points, triangles[t]), worstAngle(points, u));
+                const double before = std::min(worstAngle(points, tri), worstAngle(points, u));
                 const double after = std::min(worstAngle(points, first), worstAngle(points, second));
                 if (after <= before + 1e-9)
                     continue;
-                touched[t] = touched[size_t(other->second.first)] = 1;
-                triangles[size_t(other->second.first)] = second;
-                triangles[t] = first;
-                ++flips;
+                owner.erase(key(a, b));
+                owner.erase(key(b, a));
+                triangles[size_t(t)] = first;
+                triangles[size_t(o)] = second;
+                own(t);
+                own(o);
+                next.push_back(t);
+                next.push_back(o);
+                break; // t changed: its edges are looked at again next pass
             }
-        if (flips == 0)
-            break;
+        std::sort(next.begin(), next.end());
+        next.erase(std::unique(next.begin(), next.end()), next.end());
+        active = std::move(next);
     }
 }
 
@@ -183,7 +204,8 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
 // triangle around it stays counter-clockwise and the worst angle among them
 // gets better. Shortest edges first.
 void collapseShortEdges(const std::vector<Vec3>& points, std::vector<PointRole>& roles,
-                        std::vector<Triangle>& triangles, const Vec3& normal, double patchSize)
+                        std::vector<Triangle>& triangles, const Vec3& normal, double patchSize,
+                        std::vector<char>& touchedPoint)
 {
     std::vector<std::vector<int>> around(points.size());
     for (size_t t = 0; t < triangles.size(); ++t)
@@ -253,6 +275,7 @@ void collapseShortEdges(const std::vector<Vec3>& points, std::vector<PointRole>&
             around[size_t(v)].push_back(t);
         }
         around[size_t(u)].clear();
+        touchedPoint[size_t(v)] = 1;
     }
     size_t kept = 0;
     for (size_t t = 0; t < triangles.size(); ++t)
@@ -298,6 +321,7 @@ StripMesh stripTriangulatePieces(const std::vector<std::vector<Vec3>>& pieces, c
             triangles.push_back({index[size_t(t[0])], index[size_t(t[1])], index[size_t(t[2])]});
     }
 
+    std::vector<int> fanned; // the corners of the triangles fanned below
     // Close the T-vertices: the corners of neighbouring pieces go into the
     // edges they lie on. Only edges along a piece's outline can hold one (a
     // point of another piece is never inside this one), but checking every
@@ -316,6 +340,7 @@ StripMesh stripTriangulatePieces(const std::vector<std::vector<Vec3>>& pieces, c
             out.triangles.push_back(t);
             continue;
         }
+        fanned.insert(fanned.end(), t.begin(), t.end());
         // The triangle's outline with the inserted points, counter-clockwise,
         // starting at the corner opposite the (last) split edge.
         std::vector<int> loop;
@@ -337,8 +362,11 @@ StripMesh stripTriangulatePieces(const std::vector<std::vector<Vec3>>& pieces, c
                 out.triangles.push_back({centre, loop[i], loop[(i + 1) % loop.size()]});
         }
     }
-    collapseShortEdges(out.points, roles, out.triangles, normal, patchSize);
-    improveByFlips(out.points, out.triangles, normal);
+    std::vector<char> touched(out.points.size(), 0);
+    for (int v : fanned)
+        touched[size_t(v)] = 1;
+    collapseShortEdges(out.points, roles, out.triangles, normal, patchSize, touched);
+    improveByFlips(out.points, out.triangles, normal, touched);
 
     // Drop the points that collapsed away.
     std::vector<int> renumber(out.points.size(), -1);

@@ -2,8 +2,10 @@
 
 #include "solver/prepare/face_polygon.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -61,24 +63,129 @@ void subtract(const Polygon& polygon, const Polygon& cover, const Vec3& coverNor
     }
 }
 
-// Bounding boxes apart by more than the tolerance: nothing in common.
-bool boxesApart(const Polygon& a, const Polygon& b)
+struct Box {
+    Vec3 lo, hi;
+};
+
+Box boxOf(const Polygon& polygon)
 {
-    for (int axis = 0; axis < 3; ++axis) {
-        double a0 = a[0][axis], a1 = a0, b0 = b[0][axis], b1 = b0;
-        for (const Vec3& p : a) {
-            a0 = std::min(a0, p[axis]);
-            a1 = std::max(a1, p[axis]);
-        }
-        for (const Vec3& p : b) {
-            b0 = std::min(b0, p[axis]);
-            b1 = std::max(b1, p[axis]);
-        }
-        if (a1 < b0 - model::kDistanceEpsilon || b1 < a0 - model::kDistanceEpsilon)
-            return true;
+    Box box{polygon[0], polygon[0]};
+    for (const Vec3& p : polygon) {
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
     }
+    return box;
+}
+
+// Apart by more than the tolerance on some axis: nothing in common.
+bool apart(const Box& a, const Box& b)
+{
+    for (int axis = 0; axis < 3; ++axis)
+        if (a.hi[axis] < b.lo[axis] - model::kDistanceEpsilon || b.hi[axis] < a.lo[axis] - model::kDistanceEpsilon)
+            return true;
     return false;
 }
+
+struct CellPiece {
+    Box box;
+    Polygon loop;
+};
+
+// A face under many solids (a hall's floor under its furniture) is first cut
+// into square cells, and each cover cuts only the pieces of the cells it
+// reaches. Cut whole, every cover's edge lines would run across the whole
+// face: thousands of long thin pieces, each cover tested against all of them.
+constexpr size_t kCoversForCells = 8;
+
+// About two covers a cell, and never below two patches.
+double cellSize(const Polygon& polygon, size_t covers, double patchSize)
+{
+    return std::max(2.0 * patchSize, 2.0 * std::sqrt(model::polygonArea(polygon) / double(covers)));
+}
+
+class CellGrid {
+public:
+    // size 0: one cell, the whole polygon.
+    CellGrid(const Polygon& polygon, const Vec3& normal, double size)
+        : m_origin(polygon[0])
+        , m_u(glm::normalize(polygon[1] - polygon[0]))
+        , m_v(glm::cross(normal, m_u))
+        , m_size(size)
+    {
+        if (size <= 0.0) {
+            m_cells.push_back({{boxOf(polygon), polygon}});
+            return;
+        }
+        double u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
+        for (const Vec3& p : polygon) {
+            u0 = std::min(u0, glm::dot(p - m_origin, m_u));
+            u1 = std::max(u1, glm::dot(p - m_origin, m_u));
+            v0 = std::min(v0, glm::dot(p - m_origin, m_v));
+            v1 = std::max(v1, glm::dot(p - m_origin, m_v));
+        }
+        m_u0 = u0;
+        m_v0 = v0;
+        m_nu = std::max(1, int(std::ceil((u1 - u0) / size)));
+        m_nv = std::max(1, int(std::ceil((v1 - v0) / size)));
+        m_cells.resize(size_t(m_nu) * size_t(m_nv));
+        for (int j = 0; j < m_nv; ++j)
+            for (int i = 0; i < m_nu; ++i) {
+                Polygon cell = polygon;
+                const Vec3 lo = m_origin + m_u * (u0 + i * size) + m_v * (v0 + j * size);
+                const Vec3 hi = lo + (m_u + m_v) * size;
+                if (i > 0)
+                    cell = clipKeep(cell, lo, m_u);
+                if (i + 1 < m_nu)
+                    cell = clipKeep(cell, hi, -m_u);
+                if (j > 0)
+                    cell = clipKeep(cell, lo, m_v);
+                if (j + 1 < m_nv)
+                    cell = clipKeep(cell, hi, -m_v);
+                cell = cleanConvexLoop(cell);
+                if (cell.size() >= 3 && model::polygonArea(cell) > kNegligibleArea)
+                    m_cells[size_t(j) * size_t(m_nu) + size_t(i)].push_back({boxOf(cell), std::move(cell)});
+            }
+    }
+
+    // Calls visit(pieces of the cell) for every cell `cover` may reach.
+    template <typename Visit>
+    void forCellsNear(const Polygon& cover, Visit visit)
+    {
+        if (m_size <= 0.0) {
+            visit(m_cells[0]);
+            return;
+        }
+        double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+        for (const Vec3& p : cover) {
+            u0 = std::min(u0, glm::dot(p - m_origin, m_u));
+            u1 = std::max(u1, glm::dot(p - m_origin, m_u));
+            v0 = std::min(v0, glm::dot(p - m_origin, m_v));
+            v1 = std::max(v1, glm::dot(p - m_origin, m_v));
+        }
+        const auto index = [&](double x, double origin, int n) {
+            return std::clamp(int(std::floor((x - origin) / m_size)), 0, n - 1);
+        };
+        const double eps = model::kDistanceEpsilon;
+        for (int j = index(v0 - eps, m_v0, m_nv); j <= index(v1 + eps, m_v0, m_nv); ++j)
+            for (int i = index(u0 - eps, m_u0, m_nu); i <= index(u1 + eps, m_u0, m_nu); ++i)
+                visit(m_cells[size_t(j) * size_t(m_nu) + size_t(i)]);
+    }
+
+    std::vector<Polygon> pieces()
+    {
+        std::vector<Polygon> out;
+        for (std::vector<CellPiece>& cell : m_cells)
+            for (CellPiece& piece : cell)
+                out.push_back(std::move(piece.loop));
+        return out;
+    }
+
+private:
+    Vec3 m_origin, m_u, m_v;
+    double m_size = 0.0, m_u0 = 0.0, m_v0 = 0.0;
+    int m_nu = 1, m_nv = 1;
+    std::vector<std::vector<CellPiece>> m_cells;
+};
 
 // The area of polygon and cover in common.
 double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal, const Vec3& normal)
@@ -129,26 +236,44 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
         const Polygon& polygon = scene.faces[f].polygon;
         if (polygon.size() < 3)
             continue;
-        pieces[f].push_back(polygon);
         const auto it = byPlane.find(keys[f]);
-        if (it == byPlane.end())
+        std::vector<size_t> covers;
+        if (it != byPlane.end()) {
+            const Box face = boxOf(polygon);
+            for (size_t g : it->second[flippedOf[f] ? 0 : 1])
+                if (scene.properties[g].solid && !apart(face, boxOf(scene.faces[g].polygon)))
+                    covers.push_back(g);
+        }
+        if (covers.empty()) {
+            pieces[f].push_back(polygon);
             continue;
+        }
         const Vec3& normal = scene.properties[f].plane.normal;
-        for (size_t g : it->second[flippedOf[f] ? 0 : 1]) {
+        CellGrid grid(polygon, normal,
+                      covers.size() > kCoversForCells ? cellSize(polygon, covers.size(), scene.patchSize) : 0.0);
+        for (size_t g : covers) {
             const Polygon& cover = scene.faces[g].polygon;
             const Vec3& coverNormal = scene.properties[g].plane.normal;
-            if (!scene.properties[g].solid || boxesApart(polygon, cover))
-                continue;
-            std::vector<Polygon> next;
-            for (Polygon& piece : pieces[f]) {
-                // Pieces it does not cover stay as they are, to the bit.
-                if (commonArea(piece, cover, coverNormal, normal) <= kNegligibleArea)
-                    next.push_back(std::move(piece));
-                else
-                    subtract(piece, cover, coverNormal, normal, next);
-            }
-            pieces[f] = std::move(next);
+            const Box coverBox = boxOf(cover);
+            grid.forCellsNear(cover, [&](std::vector<CellPiece>& cell) {
+                std::vector<CellPiece> next;
+                std::vector<Polygon> cut;
+                for (CellPiece& piece : cell) {
+                    // Pieces it does not cover stay as they are, to the bit.
+                    if (apart(piece.box, coverBox) ||
+                        commonArea(piece.loop, cover, coverNormal, normal) <= kNegligibleArea) {
+                        next.push_back(std::move(piece));
+                        continue;
+                    }
+                    cut.clear();
+                    subtract(piece.loop, cover, coverNormal, normal, cut);
+                    for (Polygon& loop : cut)
+                        next.push_back({boxOf(loop), std::move(loop)});
+                }
+                cell = std::move(next);
+            });
         }
+        pieces[f] = grid.pieces();
     }
     return pieces;
 }

@@ -391,18 +391,20 @@ void PieceBuilder::collectOnEdge(int face, int a, int b, std::vector<int>& into)
 void PieceBuilder::findOutlineVertices()
 {
     m_outlineFace.assign(m_scene.vertices.size(), -1);
-    std::unordered_map<std::uint64_t, int> directed;
+    // Directed edges, sorted: an edge without its reverse is on the outline.
+    std::vector<std::uint64_t> directed;
     const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
     for (size_t f = 0; f < m_scene.faces.size(); ++f) {
         directed.clear();
         for (int e : m_scene.faces[f].elements) {
             const auto& v = m_scene.elements[size_t(e)].vertices;
             for (int i = 0; i < 3; ++i)
-                ++directed[key(v[size_t(i)], v[size_t((i + 1) % 3)])];
+                directed.push_back(key(v[size_t(i)], v[size_t((i + 1) % 3)]));
         }
-        for (const auto& [edge, count] : directed) {
+        std::sort(directed.begin(), directed.end());
+        for (std::uint64_t edge : directed) {
             const int a = int(edge >> 32), b = int(edge & 0xffffffffu);
-            if (directed.count(key(b, a)))
+            if (std::binary_search(directed.begin(), directed.end(), key(b, a)))
                 continue;
             for (int v : {a, b})
                 if (m_outlineFace[size_t(v)] < 0) {
