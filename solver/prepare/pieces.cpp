@@ -455,7 +455,8 @@ void PieceBuilder::insertEdgePoints(Work& piece)
     const bool cuts = !m_faceCuts[size_t(face)].empty();
     std::vector<int> loop;
     std::vector<int> inner;
-    bool grew = false;
+    int grownEdges = 0;
+    size_t apex = 0; // in `loop`: the corner after the last grown edge
     const size_t n = piece.loop.size();
     for (size_t i = 0; i < n; ++i) {
         const int a = piece.loop[i], b = piece.loop[(i + 1) % n];
@@ -467,7 +468,7 @@ void PieceBuilder::insertEdgePoints(Work& piece)
             collectContacts(face, a, b, inner);
         if (inner.empty())
             continue;
-        grew = true;
+        ++grownEdges;
         const Vec3 pa = vertex(a), d = vertex(b) - pa;
         std::sort(inner.begin(), inner.end(),
                   [&](int x, int y) { return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d); });
@@ -478,11 +479,22 @@ void PieceBuilder::insertEdgePoints(Work& piece)
                         [&](int x, int y) { return x == y || glm::length(vertex(x) - vertex(y)) <= kContactDistance; }),
             inner.end());
         loop.insert(loop.end(), inner.begin(), inner.end());
+        apex = (loop.size() + 1) % (loop.size() + n - i - 1); // the corner after b, once the loop is complete
     }
-    if (grew) {
+    if (grownEdges == 0)
+        return;
+    // Points on one edge of a convex piece without others: a fan from the
+    // corner after that edge (two triangles for one point, where a fan
+    // around the centroid makes four). Points on several edges, or a loop
+    // that had some already: around the centroid, since a fan from a corner
+    // would make triangles of no area.
+    if (grownEdges == 1 && !piece.centred) {
+        std::rotate(loop.begin(), loop.begin() + std::ptrdiff_t(apex), loop.end());
         piece.loop = std::move(loop);
-        piece.centred = true;
+        return;
     }
+    piece.loop = std::move(loop);
+    piece.centred = true;
 }
 
 void PieceBuilder::finish()
