@@ -84,19 +84,23 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     FormFactorRow& row = m_scratch;
     row.elements.clear();
     row.factors.clear();
+    row.near.clear();
     for (size_t j = 0; j < elements; ++j)
         if (const double f = m_perItem[j + kFirstElementItem]; f != 0.0) {
             row.elements.push_back(static_cast<std::uint32_t>(j));
             row.factors.push_back(f);
         }
+    correctNearField(m_scene, shooter, row.elements, row.factors, row.near);
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
-    const std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double));
+    const std::size_t exact =
+        row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) + row.near.size() * sizeof(NearTerm);
     if (m_cacheBudget == 0 || m_cacheBytes + exact > m_cacheBudget)
         return &row;
     FormFactorRow& kept = m_rows[p];
     kept.elements.assign(row.elements.begin(), row.elements.end()); // exact capacity
     kept.factors.assign(row.factors.begin(), row.factors.end());
+    kept.near.assign(row.near.begin(), row.near.end());
     kept.escaped = row.escaped;
     kept.blocked = row.blocked;
     m_cacheBytes += kept.bytes();
@@ -121,8 +125,11 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // The shooter's power: the area-weighted sum of its elements' unshot radiosity.
     Rgb power{0.0};
     const double kept = 1.0 - m_overrelaxation; // of the shooter's unshot radiosity
+    m_elementPower.clear();
     for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
         Rgb& unshot = m_unshot[static_cast<size_t>(e)];
+        m_elementPower.push_back(unshot * m_scene.elements[static_cast<size_t>(e)].area *
+                                 (kept != 0.0 ? m_overrelaxation : 1.0));
         power += unshot * m_scene.elements[static_cast<size_t>(e)].area;
         unshot = kept == 0.0 ? Rgb{0.0} : unshot * kept;
     }
@@ -131,12 +138,15 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
         power *= m_overrelaxation;
 
     Rgb received{0.0};
-    for (size_t k = 0; k < row->elements.size(); ++k) {
-        const size_t j = row->elements[k];
-        const double f = row->factors[k];
+    const size_t direct = row->elements.size();
+    for (size_t k = 0; k < direct + row->near.size(); ++k) {
+        const size_t j = k < direct ? row->elements[k] : row->elements[row->near[k - direct].entry];
         const Element& el = m_scene.elements[j];
         const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
-        const Rgb incident = power * f; // W arriving on element j
+        // W arriving on element j: from the whole shooter, or (near) from one of its elements
+        const Rgb incident =
+            k < direct ? power * row->factors[k]
+                       : m_elementPower[size_t(row->near[k - direct].shooterElement)] * row->near[k - direct].factor;
         const Rgb reflected = rho * incident;
         const Rgb delta = reflected / el.area; // dB_j = rho_j dB_i F_ij A_i / A_j
         m_radiosity[j] += delta;
@@ -155,9 +165,15 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
 std::vector<double> Shooting::lastFormFactors() const
 {
     std::vector<double> f(m_scene.elements.size(), 0.0);
-    if (m_lastRow)
-        for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
-            f[m_lastRow->elements[k]] = m_lastRow->factors[k];
+    if (!m_lastRow)
+        return f;
+    for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
+        f[m_lastRow->elements[k]] = m_lastRow->factors[k];
+    // Near receivers: the shooter's elements' factors, weighted by their share of its area.
+    const Patch& patch = m_scene.patches[static_cast<size_t>(m_lastShooter)];
+    for (const NearTerm& t : m_lastRow->near)
+        f[m_lastRow->elements[t.entry]] +=
+            t.factor * m_scene.elements[static_cast<size_t>(patch.firstElement + t.shooterElement)].area / patch.area;
     return f;
 }
 

@@ -37,6 +37,7 @@
 // the mesh changes (adaptive subdivision).
 #include "solver/prepare/prepared_scene.h"
 #include "solver/shooting/energy_balance.h"
+#include "solver/shooting/near_field.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_renderer.h"
 #include "solver/visibility/item_buffer.h"
@@ -126,11 +127,13 @@ private:
     struct FormFactorRow {
         std::vector<std::uint32_t> elements;
         std::vector<double> factors;
+        std::vector<NearTerm> near; // receivers close to the shooter (near_field.h)
         double escaped = 0.0;
         double blocked = 0.0;
         std::size_t bytes() const
         {
-            return elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double);
+            return elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double) +
+                   near.capacity() * sizeof(NearTerm);
         }
     };
     // The row of `shooter`: kept, or rendered now (and kept if it fits).
@@ -153,8 +156,9 @@ private:
     std::vector<Rgb> m_radiosity; // per element, W/m^2
     std::vector<Rgb> m_unshot;    // per element, W/m^2
     double m_overrelaxation = 1.0;
-    std::vector<Rgb> m_patchPower; // per patch, W
-    std::vector<double> m_perItem; // delta form factor sums per item id
+    std::vector<Rgb> m_elementPower; // the shooter's elements' share of a shot
+    std::vector<Rgb> m_patchPower;   // per patch, W
+    std::vector<double> m_perItem;   // delta form factor sums per item id
 
     Rgb m_emitted{0.0};
     Rgb m_absorbed{0.0};

@@ -1,0 +1,113 @@
+#include "solver/shooting/near_field.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+
+namespace regio::solver {
+
+namespace {
+
+// At most this many corners (a clipped polygon has one more than it had).
+constexpr size_t kMaxCorners = 16;
+
+double formFactorOf(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon)
+{
+    // Clip to the half-space in front of the point's plane (a hair above it);
+    // no memory is allocated: this runs for every near receiver of a row.
+    constexpr double kAbove = 1e-9;
+    std::array<Vec3, kMaxCorners + 1> unit;
+    size_t count = 0;
+    const size_t n0 = std::min(polygon.size(), kMaxCorners);
+    const auto add = [&](const Vec3& p) {
+        const Vec3 d = p - x;
+        const double length = glm::length(d);
+        if (length > 0.0 && count <= kMaxCorners)
+            unit[count++] = d / length;
+    };
+    for (size_t i = 0; i < n0; ++i) {
+        const Vec3& p = polygon[i];
+        const Vec3& q = polygon[(i + 1) % n0];
+        const double dp = glm::dot(n, p - x) - kAbove, dq = glm::dot(n, q - x) - kAbove;
+        if (dp >= 0.0)
+            add(p);
+        if ((dp >= 0.0) != (dq >= 0.0))
+            add(p + (q - p) * (dp / (dp - dq)));
+    }
+    if (count < 3)
+        return 0.0;
+    double sum = 0.0;
+    for (size_t i = 0; i < count; ++i) {
+        const Vec3& a = unit[i];
+        const Vec3& b = unit[(i + 1) % count];
+        const Vec3 c = glm::cross(a, b);
+        const double sine = glm::length(c);
+        if (sine <= 0.0)
+            continue;
+        sum += std::atan2(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
+    }
+    return std::abs(sum) / (2.0 * std::numbers::pi);
+}
+
+} // namespace
+
+double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon)
+{
+    return formFactorOf(x, n, polygon);
+}
+
+void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
+                      std::vector<double>& factors, std::vector<NearTerm>& near)
+{
+    const Patch& patch = scene.patches[size_t(shooter)];
+    const auto corner = [&](int v) { return scene.vertices[size_t(v)]; };
+    double reach = 0.0;
+    for (int i = 0; i < 3; ++i)
+        reach = std::max(reach,
+                         glm::length(corner(patch.vertices[size_t((i + 1) % 3)]) - corner(patch.vertices[size_t(i)])));
+    // The hemicube's total for the near receivers is kept (so the factors of
+    // a shot still sum to what the hemicube saw, and a closed room stays
+    // closed); the contour formula only says how it is shared among them.
+    const size_t first = near.size();
+    double hemicube = 0.0;
+    std::vector<size_t> entries;
+    std::vector<double> perElement(size_t(patch.elementCount), 0.0);
+    for (size_t k = 0; k < elements.size(); ++k) {
+        const Element& e = scene.elements[elements[k]];
+        if (glm::length(e.centroid - patch.centroid) >= reach)
+            continue;
+        // The form factor from the element's centroid to each shooter element.
+        const size_t before = near.size();
+        for (int s = 0; s < patch.elementCount; ++s) {
+            const Element& from = scene.elements[size_t(patch.firstElement + s)];
+            const std::array<Vec3, 3> triangle{corner(from.vertices[0]), corner(from.vertices[1]),
+                                               corner(from.vertices[2])};
+            const double mean = formFactorOf(e.centroid, e.normal, triangle);
+            if (mean > 0.0) {
+                near.push_back({std::uint32_t(k), s, mean * e.area / from.area});
+                perElement[size_t(s)] += mean * e.area / from.area; // F(from -> e)
+            }
+        }
+        if (near.size() == before)
+            continue; // the contour formula sees nothing: keep the hemicube's factor
+        hemicube += factors[k];
+        entries.push_back(k);
+    }
+    // Every element of the shooter sends the hemicube's near share, so that
+    // a shot's factors sum to the hemicube's whatever the unshot radiosity
+    // of its elements; each shares it by its own contour factors.
+    if (entries.empty() || *std::min_element(perElement.begin(), perElement.end()) <= 0.0) {
+        near.resize(first);
+        return;
+    }
+    for (size_t k : entries)
+        factors[k] = 0.0;
+    for (size_t t = first; t < near.size(); ++t)
+        near[t].factor *= hemicube / perElement[size_t(near[t].shooterElement)];
+}
+
+} // namespace regio::solver

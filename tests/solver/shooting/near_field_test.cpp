@@ -1,0 +1,94 @@
+// Receivers close to the shooter (solver/shooting/near_field.h): Lambert's
+// contour formula against the closed form, and the near factors sharing
+// exactly what the hemicube gave them.
+#include "solver/shooting/near_field.h"
+
+#include "support/adaptive_scenes.h"
+#include "support/prepared_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+
+using namespace regio;
+using namespace regio::solver;
+using model::Vec3;
+
+namespace {
+
+// A point below a corner of a parallel a x b rectangle at height c (the
+// classic closed form of the differential-area-to-rectangle factor).
+double cornerFormFactor(double a, double b, double c)
+{
+    const double x = a / c, y = b / c;
+    return (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
+            y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
+           (2.0 * std::numbers::pi);
+}
+
+} // namespace
+
+TEST(NearField, ThePointToPolygonFactorIsTheClosedFormOfARectangleOverACorner)
+{
+    for (const auto& [a, b, c] : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 0.5, 0.3}, std::array{0.1, 3.0, 2.0}}) {
+        const std::vector<Vec3> rectangle{{0, 0, c}, {0, b, c}, {a, b, c}, {a, 0, c}};
+        EXPECT_NEAR(pointToPolygonFormFactor({0, 0, 0}, {0, 0, 1}, rectangle), cornerFormFactor(a, b, c), 1e-12);
+    }
+}
+
+TEST(NearField, OnlyThePartInFrontOfThePointCounts)
+{
+    // A wall standing on the floor beside the point: the part below the
+    // floor is cut away, and a polygon wholly behind gives nothing.
+    const std::vector<Vec3> wall{{1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {1, 1, -1}};
+    const std::vector<Vec3> upper{{1, -1, 0}, {1, -1, 1}, {1, 1, 1}, {1, 1, 0}};
+    const Vec3 up{0, 0, 1};
+    EXPECT_NEAR(pointToPolygonFormFactor({0, 0, 0}, up, wall), pointToPolygonFormFactor({0, 0, 0}, up, upper), 1e-9);
+    EXPECT_GT(pointToPolygonFormFactor({0, 0, 0}, up, upper), 0.01);
+    const std::vector<Vec3> below{{1, -1, -2}, {1, -1, -1}, {1, 1, -1}, {1, 1, -2}};
+    EXPECT_EQ(pointToPolygonFormFactor({0, 0, 0}, up, below), 0.0);
+}
+
+TEST(NearField, NearReceiversShareExactlyWhatTheHemicubeGaveThem)
+{
+    // A floor patch beside the box: the box's side elements next to it are
+    // near receivers. Every element of the shooter hands on the hemicube's
+    // near total, so a shot's factors still sum to the hemicube's.
+    const PreparedScene s = test::prepared(test::boxUnderLamp());
+    int shooter = -1;
+    for (size_t p = 0; p < s.patches.size() && shooter < 0; ++p)
+        if (s.faces[size_t(s.patches[p].properties)].id == "floor.face" &&
+            std::abs(s.patches[p].centroid.x - 0.55) < 0.3 && std::abs(s.patches[p].centroid.z) < 0.3)
+            shooter = int(p);
+    ASSERT_GE(shooter, 0) << "the premise: a floor patch just beside the box";
+    std::vector<std::uint32_t> elements;
+    std::vector<double> factors;
+    for (size_t e = 0; e < s.elements.size(); ++e) {
+        elements.push_back(std::uint32_t(e));
+        factors.push_back(0.001 * double(e % 7 + 1)); // a hemicube's row, for the books
+    }
+    const std::vector<double> hemicube = factors;
+    std::vector<NearTerm> near;
+    correctNearField(s, shooter, elements, factors, near);
+    ASSERT_FALSE(near.empty());
+
+    double replaced = 0.0;
+    std::map<std::uint32_t, bool> nearEntries;
+    for (const NearTerm& t : near)
+        nearEntries[t.entry] = true;
+    for (const auto& [entry, _] : nearEntries) {
+        EXPECT_EQ(factors[entry], 0.0);
+        replaced += hemicube[entry];
+        EXPECT_EQ(s.faces[size_t(s.elements[elements[entry]].properties)].id.rfind("box.", 0), 0u)
+            << "only the box's elements face the floor patch from nearby";
+    }
+    std::vector<double> perShooterElement(size_t(s.patches[size_t(shooter)].elementCount), 0.0);
+    for (const NearTerm& t : near)
+        perShooterElement[size_t(t.shooterElement)] += t.factor;
+    for (double sum : perShooterElement)
+        EXPECT_NEAR(sum, replaced, 1e-12);
+}
