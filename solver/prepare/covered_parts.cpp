@@ -37,19 +37,10 @@ Polygon clipKeep(const Polygon& polygon, const Vec3& a, const Vec3& m)
     return out;
 }
 
-double polygonArea(const Polygon& polygon, const Vec3& normal)
-{
-    Vec3 sum(0.0);
-    for (size_t i = 0; i < polygon.size(); ++i)
-        sum += glm::cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-    return 0.5 * std::abs(glm::dot(sum, normal));
-}
-
 // polygon - cover, as convex pieces: outside each edge of the cover in turn,
 // the rest going on to the next edge; what is inside every edge is covered.
 // Pieces thinner than the distance tolerance are dropped.
-void subtract(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal, const Vec3& normal,
-              std::vector<Polygon>& out)
+void subtract(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal, std::vector<Polygon>& out)
 {
     Polygon rest = polygon;
     const size_t n = cover.size();
@@ -57,7 +48,7 @@ void subtract(const Polygon& polygon, const Polygon& cover, const Vec3& coverNor
         const Vec3& a = cover[k];
         const Vec3 inward = glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a));
         Polygon outside = cleanConvexLoop(clipKeep(rest, a, -inward));
-        if (outside.size() >= 3 && polygonArea(outside, normal) > kNegligibleArea)
+        if (outside.size() >= 3 && model::polygonArea(outside) > kNegligibleArea)
             out.push_back(std::move(outside));
         rest = clipKeep(rest, a, inward);
     }
@@ -116,13 +107,7 @@ public:
             m_cells.push_back({{boxOf(polygon), polygon}});
             return;
         }
-        double u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
-        for (const Vec3& p : polygon) {
-            u0 = std::min(u0, glm::dot(p - m_origin, m_u));
-            u1 = std::max(u1, glm::dot(p - m_origin, m_u));
-            v0 = std::min(v0, glm::dot(p - m_origin, m_v));
-            v1 = std::max(v1, glm::dot(p - m_origin, m_v));
-        }
+        const auto [u0, u1, v0, v1] = extentOf(polygon);
         m_u0 = u0;
         m_v0 = v0;
         m_nu = std::max(1, int(std::ceil((u1 - u0) / size)));
@@ -155,13 +140,7 @@ public:
             visit(m_cells[0]);
             return;
         }
-        double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
-        for (const Vec3& p : cover) {
-            u0 = std::min(u0, glm::dot(p - m_origin, m_u));
-            u1 = std::max(u1, glm::dot(p - m_origin, m_u));
-            v0 = std::min(v0, glm::dot(p - m_origin, m_v));
-            v1 = std::max(v1, glm::dot(p - m_origin, m_v));
-        }
+        const auto [u0, u1, v0, v1] = extentOf(cover);
         const auto index = [&](double x, double origin, int n) {
             return std::clamp(int(std::floor((x - origin) / m_size)), 0, n - 1);
         };
@@ -181,6 +160,17 @@ public:
     }
 
 private:
+    // The polygon's extent along u and v from the origin: {u0, u1, v0, v1}.
+    std::array<double, 4> extentOf(const Polygon& polygon) const
+    {
+        std::array<double, 4> e{1e300, -1e300, 1e300, -1e300};
+        for (const Vec3& p : polygon) {
+            const double u = glm::dot(p - m_origin, m_u), v = glm::dot(p - m_origin, m_v);
+            e = {std::min(e[0], u), std::max(e[1], u), std::min(e[2], v), std::max(e[3], v)};
+        }
+        return e;
+    }
+
     Vec3 m_origin, m_u, m_v;
     double m_size = 0.0, m_u0 = 0.0, m_v0 = 0.0;
     int m_nu = 1, m_nv = 1;
@@ -188,7 +178,7 @@ private:
 };
 
 // The area of polygon and cover in common.
-double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal, const Vec3& normal)
+double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal)
 {
     Polygon common = polygon;
     const size_t n = cover.size();
@@ -196,7 +186,7 @@ double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& cove
         const Vec3& a = cover[k];
         common = clipKeep(common, a, glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a)));
     }
-    return common.size() >= 3 ? polygonArea(common, normal) : 0.0;
+    return common.size() >= 3 ? model::polygonArea(common) : 0.0;
 }
 
 // A plane and its opposite share a key: the normal and offset rounded, then
@@ -260,13 +250,12 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
                 std::vector<Polygon> cut;
                 for (CellPiece& piece : cell) {
                     // Pieces it does not cover stay as they are, to the bit.
-                    if (apart(piece.box, coverBox) ||
-                        commonArea(piece.loop, cover, coverNormal, normal) <= kNegligibleArea) {
+                    if (apart(piece.box, coverBox) || commonArea(piece.loop, cover, coverNormal) <= kNegligibleArea) {
                         next.push_back(std::move(piece));
                         continue;
                     }
                     cut.clear();
-                    subtract(piece.loop, cover, coverNormal, normal, cut);
+                    subtract(piece.loop, cover, coverNormal, cut);
                     for (Polygon& loop : cut)
                         next.push_back({boxOf(loop), std::move(loop)});
                 }
