@@ -1,5 +1,6 @@
 #include "solver/prepare/meshing.h"
 
+#include "model/geometry/geometry.h"
 #include "solver/prepare/conforming_strips.h"
 #include "solver/prepare/covered_parts.h"
 
@@ -47,6 +48,34 @@ private:
     int m_k;
     std::unordered_map<std::uint64_t, int> m_edges;
 };
+
+// Lights are cut into smaller patches than everything else (§5.6). The
+// hemicube sees the scene from a shooter's centre, so a patch shares its
+// light as if all of it sat there; the first shots, which carry all the
+// direct light, come from the emitters, and a face whose plane passes close
+// to a lamp (a block's side under a ceiling lamp) takes its light from the
+// part of the lamp in front of it, which a large patch's centre does not
+// tell. A quarter of the patch size puts the centres that close. The face
+// gets at most kMaxEmitterPatches patches this way (a luminous ceiling would
+// otherwise shoot thousands of times): the divisor halves until it fits.
+constexpr int kEmitterPatchDivisor = 4;
+constexpr double kMaxEmitterPatches = 256.0;
+
+double patchSizeOf(const PreparedScene& scene, size_t face, const std::vector<std::vector<Vec3>>& pieces)
+{
+    const Rgb& emission = scene.properties[face].emission;
+    if (!(emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0))
+        return scene.patchSize;
+    double area = 0.0;
+    for (const std::vector<Vec3>& piece : pieces)
+        area += model::polygonArea(piece);
+    for (int divisor = kEmitterPatchDivisor; divisor > 1; divisor /= 2) {
+        const double size = scene.patchSize / divisor;
+        if (2.0 * area / (size * size) <= kMaxEmitterPatches)
+            return size;
+    }
+    return scene.patchSize;
+}
 
 double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); }
 
@@ -129,7 +158,7 @@ void meshFaces(PreparedScene& scene)
         if (uncovered[f].empty())
             continue;
         const Properties& props = scene.properties[f];
-        StripMesh mesh = stripTriangulatePieces(uncovered[f], props.plane.normal, scene.patchSize);
+        StripMesh mesh = stripTriangulatePieces(uncovered[f], props.plane.normal, patchSizeOf(scene, f, uncovered[f]));
 
         const int base = int(scene.vertices.size());
         scene.vertices.insert(scene.vertices.end(), mesh.points.begin(), mesh.points.end());

@@ -61,22 +61,22 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
 }
 
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
-                      std::vector<double>& factors, std::vector<NearTerm>& near)
+                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale)
 {
+    farScale.clear();
     const Patch& patch = scene.patches[size_t(shooter)];
     const auto corner = [&](int v) { return scene.vertices[size_t(v)]; };
     double reach = 0.0;
     for (int i = 0; i < 3; ++i)
         reach = std::max(reach,
                          glm::length(corner(patch.vertices[size_t((i + 1) % 3)]) - corner(patch.vertices[size_t(i)])));
-    // The hemicube's total for the near receivers is kept (so the factors of
-    // a shot still sum to what the hemicube saw, and a closed room stays
-    // closed); the contour formula only says how it is shared among them.
     const size_t first = near.size();
-    double hemicube = 0.0;
+    double total = 0.0;    // the hemicube's factors of every receiver
+    double hemicube = 0.0; // and of the near ones
     std::vector<size_t> entries;
     std::vector<double> perElement(size_t(patch.elementCount), 0.0);
     for (size_t k = 0; k < elements.size(); ++k) {
+        total += factors[k];
         const Element& e = scene.elements[elements[k]];
         if (glm::length(e.centroid - patch.centroid) >= reach)
             continue;
@@ -97,17 +97,37 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
         hemicube += factors[k];
         entries.push_back(k);
     }
-    // Every element of the shooter sends the hemicube's near share, so that
-    // a shot's factors sum to the hemicube's whatever the unshot radiosity
-    // of its elements; each shares it by its own contour factors.
-    if (entries.empty() || *std::min_element(perElement.begin(), perElement.end()) <= 0.0) {
-        near.resize(first);
+    if (entries.empty())
         return;
-    }
     for (size_t k : entries)
         factors[k] = 0.0;
-    for (size_t t = first; t < near.size(); ++t)
-        near[t].factor *= hemicube / perElement[size_t(near[t].shooterElement)];
+    const double far = total - hemicube;
+    if (far <= 0.0) {
+        // Every receiver is near: each element of the shooter hands on the
+        // hemicube's total, shared by its own contour factors.
+        for (size_t t = first; t < near.size(); ++t)
+            near[t].factor *= perElement[size_t(near[t].shooterElement)] > 0.0
+                                  ? hemicube / perElement[size_t(near[t].shooterElement)]
+                                  : 0.0;
+        return;
+    }
+    // The near receivers keep the contour formula's factors; what each
+    // element of the shooter gives them more or less than the hemicube saw
+    // comes out of its share for the far receivers. So every element of the
+    // shooter sends the hemicube's total, whatever its unshot radiosity.
+    farScale.assign(size_t(patch.elementCount), 1.0);
+    for (size_t s = 0; s < perElement.size(); ++s) {
+        double nearTotal = perElement[s];
+        if (nearTotal > total) {
+            // More than the hemicube saw in all (never on the samples):
+            // the near receivers get everything, scaled down to it.
+            for (size_t t = first; t < near.size(); ++t)
+                if (size_t(near[t].shooterElement) == s)
+                    near[t].factor *= total / nearTotal;
+            nearTotal = total;
+        }
+        farScale[s] = (total - nearTotal) / far;
+    }
 }
 
 } // namespace regio::solver

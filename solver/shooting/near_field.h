@@ -4,14 +4,18 @@
 // a patch (a block's foot next to a floor patch) it shares the light by how
 // they look from that one point, and the patch's elements all send alike.
 // For such receivers the sharing is taken from Lambert's contour formula
-// instead: the mean form factor from three points of the element to each
-// element of the shooter (clipped to the front of the receiver's plane), so
+// instead: the form factor from the element's centroid to each element of
+// the shooter (clipped to the front of the receiver's plane), so
 // the shooter's elements send their own unshot radiosity where it lands.
 //
-// What the hemicube gave the near receivers in total is kept: each element
-// of the shooter hands on exactly that share. A shot's factors still sum to
-// the hemicube's, the energy books stay exact and a closed room closed; the
-// hemicube also still decides which elements are seen at all.
+// The near receivers keep the contour formula's factors: the hemicube's
+// total for them carries its proximity error (a floor patch's centre sees a
+// block's foot at another angle than most of the patch does). What each
+// element of the shooter gives them more or less than the hemicube saw
+// comes out of its share for the far receivers (farScale), so that every
+// element of the shooter still sends the hemicube's total: a shot's books
+// stay exact and a closed room stays closed. The hemicube still decides
+// which elements are seen at all.
 #include "solver/prepare/prepared_scene.h"
 
 #include <cstdint>
@@ -34,11 +38,13 @@ struct NearTerm {
 
 // For the `elements` whose centroid is closer to the shooter's centroid than
 // the shooter's longest edge: sets their factor to 0 and appends their
-// per-shooter-element factors to `near`, scaled so that every shooter
-// element's near factors sum to the near elements' hemicube factors. Leaves
-// the row as it is where the contour formula sees nothing from some element
-// of the shooter.
+// per-shooter-element factors to `near`; sets farScale[s] (one per shooter
+// element) so that shooter element s sends its near factors plus farScale[s]
+// times the other elements' factors, exactly the row's total. Leaves the row
+// as it is (and farScale empty) when no receiver is near or the contour
+// formula sees none of them; when every receiver is near, farScale stays
+// empty and each shooter element's near factors are scaled to the total.
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
-                      std::vector<double>& factors, std::vector<NearTerm>& near);
+                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale);
 
 } // namespace regio::solver

@@ -85,22 +85,24 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     row.elements.clear();
     row.factors.clear();
     row.near.clear();
+    row.farScale.clear();
     for (size_t j = 0; j < elements; ++j)
         if (const double f = m_perItem[j + kFirstElementItem]; f != 0.0) {
             row.elements.push_back(static_cast<std::uint32_t>(j));
             row.factors.push_back(f);
         }
-    correctNearField(m_scene, shooter, row.elements, row.factors, row.near);
+    correctNearField(m_scene, shooter, row.elements, row.factors, row.near, row.farScale);
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
-    const std::size_t exact =
-        row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) + row.near.size() * sizeof(NearTerm);
+    const std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) +
+                              row.near.size() * sizeof(NearTerm) + row.farScale.size() * sizeof(double);
     if (m_cacheBudget == 0 || m_cacheBytes + exact > m_cacheBudget)
         return &row;
     FormFactorRow& kept = m_rows[p];
     kept.elements.assign(row.elements.begin(), row.elements.end()); // exact capacity
     kept.factors.assign(row.factors.begin(), row.factors.end());
     kept.near.assign(row.near.begin(), row.near.end());
+    kept.farScale.assign(row.farScale.begin(), row.farScale.end());
     kept.escaped = row.escaped;
     kept.blocked = row.blocked;
     m_cacheBytes += kept.bytes();
@@ -124,19 +126,33 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
 
     // The shooter's power: the area-weighted sum of its elements' unshot radiosity.
     Rgb power{0.0};
-    const double kept = 1.0 - m_overrelaxation; // of the shooter's unshot radiosity
+    // Emitters shoot what they hold and no more: their unshot power is mostly
+    // their own emission, far more than what comes back to them, so an
+    // overshoot would only leave a debt that each of a light's patches must
+    // shoot again to take back.
+    const bool emits = luminance(m_scene.properties[static_cast<size_t>(patch.properties)].emission) > 0.0;
+    const double omega = emits ? 1.0 : m_overrelaxation;
+    const double kept = 1.0 - omega; // of the shooter's unshot radiosity
     m_elementPower.clear();
     for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
         Rgb& unshot = m_unshot[static_cast<size_t>(e)];
-        m_elementPower.push_back(unshot * m_scene.elements[static_cast<size_t>(e)].area *
-                                 (kept != 0.0 ? m_overrelaxation : 1.0));
+        m_elementPower.push_back(unshot * m_scene.elements[static_cast<size_t>(e)].area * (kept != 0.0 ? omega : 1.0));
         power += unshot * m_scene.elements[static_cast<size_t>(e)].area;
         unshot = kept == 0.0 ? Rgb{0.0} : unshot * kept;
     }
     m_patchPower[static_cast<size_t>(shooter)] = kept == 0.0 ? Rgb{0.0} : power * kept;
     if (kept != 0.0)
-        power *= m_overrelaxation;
+        power *= omega;
 
+    // What the far receivers' factors apply to: the shooter's power, or with
+    // near receivers each shooter element's power times its far share
+    // (near_field.h).
+    Rgb farPower = power;
+    if (!row->farScale.empty()) {
+        farPower = Rgb{0.0};
+        for (size_t s = 0; s < row->farScale.size(); ++s)
+            farPower += m_elementPower[s] * row->farScale[s];
+    }
     Rgb received{0.0};
     const size_t direct = row->elements.size();
     for (size_t k = 0; k < direct + row->near.size(); ++k) {
@@ -145,7 +161,7 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
         const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
         // W arriving on element j: from the whole shooter, or (near) from one of its elements
         const Rgb incident =
-            k < direct ? power * row->factors[k]
+            k < direct ? farPower * row->factors[k]
                        : m_elementPower[size_t(row->near[k - direct].shooterElement)] * row->near[k - direct].factor;
         const Rgb reflected = rho * incident;
         const Rgb delta = reflected / el.area; // dB_j = rho_j dB_i F_ij A_i / A_j
@@ -167,10 +183,15 @@ std::vector<double> Shooting::lastFormFactors() const
     std::vector<double> f(m_scene.elements.size(), 0.0);
     if (!m_lastRow)
         return f;
-    for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
-        f[m_lastRow->elements[k]] = m_lastRow->factors[k];
-    // Near receivers: the shooter's elements' factors, weighted by their share of its area.
+    // Near receivers and the far share: the shooter's elements' values,
+    // weighted by their share of its area.
     const Patch& patch = m_scene.patches[static_cast<size_t>(m_lastShooter)];
+    double farScale = m_lastRow->farScale.empty() ? 1.0 : 0.0;
+    for (size_t s = 0; s < m_lastRow->farScale.size(); ++s)
+        farScale +=
+            m_lastRow->farScale[s] * m_scene.elements[static_cast<size_t>(patch.firstElement) + s].area / patch.area;
+    for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
+        f[m_lastRow->elements[k]] = m_lastRow->factors[k] * farScale;
     for (const NearTerm& t : m_lastRow->near)
         f[m_lastRow->elements[t.entry]] +=
             t.factor * m_scene.elements[static_cast<size_t>(patch.firstElement + t.shooterElement)].area / patch.area;

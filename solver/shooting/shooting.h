@@ -26,7 +26,10 @@
 // from the unshot pool), the answer is the same fixed point, and with some
 // unshot power negative, "most unshot power" and the convergence measure
 // take magnitudes. w = 1 is the classic progressive refinement; above about
-// 1.4 the shots grow again here.
+// 1.4 the shots grow again here. Emitting patches shoot with w = 1: what they
+// hold is mostly their own emission, far more than comes back to them, and
+// a light cut into many patches (solver/prepare/meshing.h) would otherwise
+// shoot each of them twice, the second time only to take its debt back.
 //
 // A patch is shot many times in a long solve (its unshot power comes back
 // with every shot that reaches it), and its view never changes on a fixed
@@ -127,13 +130,14 @@ private:
     struct FormFactorRow {
         std::vector<std::uint32_t> elements;
         std::vector<double> factors;
-        std::vector<NearTerm> near; // receivers close to the shooter (near_field.h)
+        std::vector<NearTerm> near;   // receivers close to the shooter (near_field.h)
+        std::vector<double> farScale; // per shooter element (near_field.h); empty = 1
         double escaped = 0.0;
         double blocked = 0.0;
         std::size_t bytes() const
         {
             return elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double) +
-                   near.capacity() * sizeof(NearTerm);
+                   near.capacity() * sizeof(NearTerm) + farScale.capacity() * sizeof(double);
         }
     };
     // The row of `shooter`: kept, or rendered now (and kept if it fits).

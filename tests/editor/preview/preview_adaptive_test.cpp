@@ -55,6 +55,7 @@ model::Scene refiningBox()
 {
     model::Scene scene = test::loadSample("cornell-box");
     scene.solver.hemicube = 64;
+    scene.solver.elementsPerPatch = 4; // elements of 5 cm: 2 cm below lets them split
     scene.solver.adaptive.enabled = true;
     scene.solver.adaptive.threshold = 0.02;
     scene.solver.adaptive.minEdge = 0.02;

@@ -53,11 +53,11 @@ TEST(NearField, OnlyThePartInFrontOfThePointCounts)
     EXPECT_EQ(pointToPolygonFormFactor({0, 0, 0}, up, below), 0.0);
 }
 
-TEST(NearField, NearReceiversShareExactlyWhatTheHemicubeGaveThem)
+TEST(NearField, NearReceiversTakeTheContourFactorsAndTheFarOnesTheRestOfTheHemicubesTotal)
 {
     // A floor patch beside the box: the box's side elements next to it are
-    // near receivers. Every element of the shooter hands on the hemicube's
-    // near total, so a shot's factors still sum to the hemicube's.
+    // near receivers. They keep their contour factors; every element of the
+    // shooter still sends the hemicube's total, its far share scaled for it.
     const PreparedScene s = test::prepared(test::boxUnderLamp());
     int shooter = -1;
     for (size_t p = 0; p < s.patches.size() && shooter < 0; ++p)
@@ -65,6 +65,7 @@ TEST(NearField, NearReceiversShareExactlyWhatTheHemicubeGaveThem)
             std::abs(s.patches[p].centroid.x - 0.55) < 0.3 && std::abs(s.patches[p].centroid.z) < 0.3)
             shooter = int(p);
     ASSERT_GE(shooter, 0) << "the premise: a floor patch just beside the box";
+    const Patch& patch = s.patches[size_t(shooter)];
     std::vector<std::uint32_t> elements;
     std::vector<double> factors;
     for (size_t e = 0; e < s.elements.size(); ++e) {
@@ -73,22 +74,39 @@ TEST(NearField, NearReceiversShareExactlyWhatTheHemicubeGaveThem)
     }
     const std::vector<double> hemicube = factors;
     std::vector<NearTerm> near;
-    correctNearField(s, shooter, elements, factors, near);
+    std::vector<double> farScale;
+    correctNearField(s, shooter, elements, factors, near, farScale);
     ASSERT_FALSE(near.empty());
+    ASSERT_EQ(farScale.size(), size_t(patch.elementCount));
 
-    double replaced = 0.0;
     std::map<std::uint32_t, bool> nearEntries;
     for (const NearTerm& t : near)
         nearEntries[t.entry] = true;
     for (const auto& [entry, _] : nearEntries) {
         EXPECT_EQ(factors[entry], 0.0);
-        replaced += hemicube[entry];
         EXPECT_EQ(s.faces[size_t(s.elements[elements[entry]].properties)].id.rfind("box.", 0), 0u)
             << "only the box's elements face the floor patch from nearby";
     }
-    std::vector<double> perShooterElement(size_t(s.patches[size_t(shooter)].elementCount), 0.0);
+    // The near factors are the contour formula's, from the receiver's centroid.
+    for (const NearTerm& t : near) {
+        const Element& receiver = s.elements[elements[t.entry]];
+        const Element& from = s.elements[size_t(patch.firstElement + t.shooterElement)];
+        const std::vector<Vec3> triangle{s.vertices[size_t(from.vertices[0])], s.vertices[size_t(from.vertices[1])],
+                                         s.vertices[size_t(from.vertices[2])]};
+        EXPECT_NEAR(t.factor,
+                    pointToPolygonFormFactor(receiver.centroid, receiver.normal, triangle) * receiver.area / from.area,
+                    1e-15);
+    }
+    // Each shooter element: its near factors plus its far share of the rest
+    // is the hemicube's total.
+    double total = 0.0, far = 0.0;
+    for (size_t k = 0; k < factors.size(); ++k) {
+        total += hemicube[k];
+        far += factors[k];
+    }
+    std::vector<double> sent(size_t(patch.elementCount), 0.0);
     for (const NearTerm& t : near)
-        perShooterElement[size_t(t.shooterElement)] += t.factor;
-    for (double sum : perShooterElement)
-        EXPECT_NEAR(sum, replaced, 1e-12);
+        sent[size_t(t.shooterElement)] += t.factor;
+    for (size_t e = 0; e < sent.size(); ++e)
+        EXPECT_NEAR(sent[e] + farScale[e] * far, total, 1e-12);
 }

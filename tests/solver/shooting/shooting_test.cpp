@@ -98,15 +98,19 @@ TEST(Shooting, ThePatchWithTheMostUnshotPowerShootsFirst)
     auto solver = make(twoLamps());
     ASSERT_TRUE(solver);
     const Shooting& s = solver->shooting();
-    int lampPatches = 0;
-    for (size_t i = 0; i < solver->prepared().patches.size(); ++i)
-        lampPatches += faceOfPatch(solver->prepared(), static_cast<int>(i)) != "floor.face" &&
-                       faceOfPatch(solver->prepared(), static_cast<int>(i)).rfind("box", 0) != 0;
-    ASSERT_EQ(lampPatches, 4);
-    // 0.5 W per patch of the big lamp against 0.375 W for the small one.
-    EXPECT_EQ(faceOfPatch(solver->prepared(), s.selectShooter()), "big.face");
-    solver->step(2);
+    int big = 0, small = 0;
+    for (size_t i = 0; i < solver->prepared().patches.size(); ++i) {
+        big += faceOfPatch(solver->prepared(), static_cast<int>(i)) == "big.face";
+        small += faceOfPatch(solver->prepared(), static_cast<int>(i)) == "small.face";
+    }
+    // Lights are cut at a quarter of the patch size (solver/prepare/meshing.h):
+    // 1 W over 8 patches of the big lamp, 0.75 W over 2 of the small one.
+    ASSERT_EQ(big, 8);
+    ASSERT_EQ(small, 2);
+    // 0.375 W per patch of the small lamp against 0.125 W for the big one.
     EXPECT_EQ(faceOfPatch(solver->prepared(), s.selectShooter()), "small.face");
+    solver->step(2);
+    EXPECT_EQ(faceOfPatch(solver->prepared(), s.selectShooter()), "big.face");
 }
 
 TEST(Shooting, UnshotPowerIsJudgedByLuminance)
@@ -125,6 +129,9 @@ TEST(Shooting, UnshotPowerIsJudgedByLuminance)
 
 // dB_j = rho_j w dB_i F_ij A_i / A_j, and the shooter keeps (1 - w) dB_i
 // unshot: w = 1 (classic progressive refinement) and the default w.
+// A lamp's first shot: every receiver gains rho_j B_i F_ij A_i / A_j. Lights
+// shoot exactly what they hold whatever the overrelaxation (an overshoot
+// would only leave each of their patches a debt to take back, shooting.h).
 TEST(Shooting, ReceiversGainReflectanceTimesShotRadiosityTimesFormFactorTimesAreaRatio)
 {
     for (double w : {1.0, kDefaultOverrelaxation}) {
@@ -147,17 +154,38 @@ TEST(Shooting, ReceiversGainReflectanceTimesShotRadiosityTimesFormFactorTimesAre
             const Properties& props = p.properties[static_cast<size_t>(e.properties)];
             const double f = factors[j];
             receivers += f > 0.0;
-            const Rgb expected = props.reflectance * (w * emission) * f * patch.area / e.area;
+            const Rgb expected = props.reflectance * emission * f * patch.area / e.area;
             const Rgb gained = s.radiosity()[j] - props.emission;
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(gained[c], expected[c], 1e-12);
         }
         EXPECT_GT(receivers, 10);
-        // The shooter keeps (1 - w) of its unshot radiosity: nothing when w = 1.
         for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(s.unshotRadiosity()[static_cast<size_t>(e)][c], (1.0 - w) * emission[c], 1e-12);
+                EXPECT_EQ(s.unshotRadiosity()[static_cast<size_t>(e)][c], 0.0);
     }
+}
+
+// Patches that do not emit overshoot: a shot sends w times their unshot
+// radiosity and leaves (1 - w) of it, negative, for a later shot to take back.
+TEST(Shooting, APatchThatDoesNotEmitShootsWTimesItsUnshotRadiosity)
+{
+    auto solver = make(twoLamps());
+    ASSERT_TRUE(solver);
+    const PreparedScene& p = solver->prepared();
+    const Shooting& s = solver->shooting();
+    const auto emits = [&](int patch) {
+        return p.properties[static_cast<size_t>(p.patches[static_cast<size_t>(patch)].properties)].emission != Rgb{0.0};
+    };
+    while (emits(s.selectShooter()))
+        ASSERT_EQ(solver->step(1), 1);
+    const Patch& patch = p.patches[static_cast<size_t>(s.selectShooter())];
+    const std::vector<Rgb> before = s.unshotRadiosity();
+    solver->step(1);
+    for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(s.unshotRadiosity()[static_cast<size_t>(e)][c],
+                        (1.0 - kDefaultOverrelaxation) * before[static_cast<size_t>(e)][c], 1e-12);
 }
 
 TEST(Shooting, PatchUnshotPowerIsTheAreaWeightedSumOfItsElements)
