@@ -21,7 +21,8 @@ namespace {
 
 // Fragments from a one-region BSP build of the given faces, the faces meshed,
 // and the elements cut into pieces by that tree.
-PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSize, int elementsPerPatch)
+PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSize, int elementsPerPatch,
+                     const std::vector<bool>& emits = {})
 {
     PreparedScene scene;
     std::vector<FacePolygon> polygons;
@@ -35,6 +36,8 @@ PreparedScene meshed(const std::vector<std::vector<Vec3>>& faces, double patchSi
         Properties props;
         props.plane = model::polygonPlane(loop);
         props.face = index;
+        if (size_t(index) < emits.size() && emits[size_t(index)])
+            props.emission = {1.0, 1.0, 1.0};
         scene.properties.push_back(props);
         polygons.push_back({loop, index});
     }
@@ -196,6 +199,36 @@ TEST(Meshing, KeepsPiecesOfOneNodeContiguousInTheirFourGroups)
     }
     EXPECT_EQ(next, int(s.pieces.size()));
     EXPECT_EQ(s.stats.lostPieces, 0);
+}
+
+// A light shares its power from its patches' centres, and its shots carry
+// all the direct light: faces that emit are cut at a quarter of the patch
+// size, or a half, or the patch size, whichever first keeps them at 256
+// patches or fewer (solver/prepare/meshing.cpp).
+TEST(Meshing, LightsAreCutIntoPatchesAQuarterOfThePatchSizeWhileTheyStayAt256OrFewer)
+{
+    const auto square = [](double side, double y) {
+        return std::vector<Vec3>{{0, y, 0}, {side, y, 0}, {side, y, side}, {0, y, side}};
+    };
+    const auto patchesOf = [](const PreparedScene& s, int face) {
+        int n = 0;
+        for (const Patch& p : s.patches)
+            n += p.properties == face;
+        return n;
+    };
+    for (const auto& [side, divisor] : {std::pair{1.0, 4}, std::pair{2.0, 2}, std::pair{10.0, 1}}) {
+        SCOPED_TRACE(side);
+        const PreparedScene lit = meshed({square(side, 0.0), square(side, 1.0)}, 0.5, 1, {true, false});
+        const int lamp = patchesOf(lit, 0), plain = patchesOf(lit, 1);
+        EXPECT_EQ(lamp, plain * divisor * divisor);
+        if (divisor > 1) {
+            EXPECT_LE(lamp, 256);
+        }
+        double area = 0.0;
+        for (const Patch& p : lit.patches)
+            area += p.properties == 0 ? p.area : 0.0;
+        EXPECT_NEAR(area, side * side, 1e-9);
+    }
 }
 
 TEST(Meshing, ListsEveryElementOfAnInputFaceOnce)
