@@ -96,8 +96,7 @@ void Solver::noteShot()
     bool emits = false;
     if (const int shooter = m_shooting->lastShooter(); shooter >= 0) {
         const Patch& p = m_prepared.patches[static_cast<size_t>(shooter)];
-        const Rgb& emission = m_prepared.properties[static_cast<size_t>(p.properties)].emission;
-        emits = emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0;
+        emits = m_prepared.properties[static_cast<size_t>(p.properties)].emits();
     }
     m_refinement->noteShot(m_shooting->iterations(), emits);
 }

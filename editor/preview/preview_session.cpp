@@ -185,9 +185,7 @@ bool PreviewSession::refinementMayFollow(const solver::SolverStats& stats) const
     const solver::PreparedScene& prepared = m_solver->prepared();
     if (shooter < 0 || size_t(shooter) >= prepared.patches.size())
         return false;
-    const model::Rgb& emission =
-        prepared.properties[static_cast<size_t>(prepared.patches[static_cast<size_t>(shooter)].properties)].emission;
-    return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0;
+    return prepared.properties[static_cast<size_t>(prepared.patches[static_cast<size_t>(shooter)].properties)].emits();
 }
 
 void PreviewSession::serveHemicube()

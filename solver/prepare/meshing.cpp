@@ -63,8 +63,7 @@ constexpr double kMaxEmitterPatches = 256.0;
 
 double patchSizeOf(const PreparedScene& scene, size_t face, const std::vector<std::vector<Vec3>>& pieces)
 {
-    const Rgb& emission = scene.properties[face].emission;
-    if (!(emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0))
+    if (!scene.properties[face].emits())
         return scene.patchSize;
     double area = 0.0;
     for (const std::vector<Vec3>& piece : pieces)

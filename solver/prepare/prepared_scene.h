@@ -89,6 +89,10 @@ struct Properties {
     // coplanar receiver, the receiver faces into the solid there (a box
     // standing on a box): the back face must win (Visibility::render).
     bool solid = false;
+
+    // The face emits light in some channel (a light's patches are cut finer
+    // and shoot without overshoot).
+    bool emits() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
 };
 
 // One face of the input scene, in scene order (objects, parts, faces). Faces

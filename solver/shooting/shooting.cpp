@@ -130,19 +130,17 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // their own emission, far more than what comes back to them, so an
     // overshoot would only leave a debt that each of a light's patches must
     // shoot again to take back.
-    const bool emits = luminance(m_scene.properties[static_cast<size_t>(patch.properties)].emission) > 0.0;
-    const double omega = emits ? 1.0 : m_overrelaxation;
+    const double omega = m_scene.properties[static_cast<size_t>(patch.properties)].emits() ? 1.0 : m_overrelaxation;
     const double kept = 1.0 - omega; // of the shooter's unshot radiosity
     m_elementPower.clear();
     for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {
         Rgb& unshot = m_unshot[static_cast<size_t>(e)];
-        m_elementPower.push_back(unshot * m_scene.elements[static_cast<size_t>(e)].area * (kept != 0.0 ? omega : 1.0));
+        m_elementPower.push_back(unshot * m_scene.elements[static_cast<size_t>(e)].area * omega);
         power += unshot * m_scene.elements[static_cast<size_t>(e)].area;
         unshot = kept == 0.0 ? Rgb{0.0} : unshot * kept;
     }
     m_patchPower[static_cast<size_t>(shooter)] = kept == 0.0 ? Rgb{0.0} : power * kept;
-    if (kept != 0.0)
-        power *= omega;
+    power *= omega; // exactly 1 when nothing is kept
 
     // What the far receivers' factors apply to: the shooter's power, or with
     // near receivers each shooter element's power times its far share

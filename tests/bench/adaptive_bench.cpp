@@ -163,8 +163,8 @@ void rounds(benchmark::State& state)
             if (shooting.shoot() != ShotResult::Shot)
                 break;
             const Patch& shooter = active.patches[static_cast<size_t>(shooting.lastShooter())];
-            const Rgb& emission = active.properties[static_cast<size_t>(shooter.properties)].emission;
-            refinement.noteShot(shooting.iterations(), emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0);
+            refinement.noteShot(shooting.iterations(),
+                                active.properties[static_cast<size_t>(shooter.properties)].emits());
         }
         state.SetIterationTime(splitSeconds + handOverSeconds);
         const int n = refinement.rounds();
