@@ -1,6 +1,6 @@
 // Receivers close to the shooter (solver/shooting/near_field.h): Lambert's
-// contour formula against the closed form, and the near factors sharing
-// exactly what the hemicube gave them.
+// contour formula against the closed form, and the near factors with the
+// far share that keeps every shooter element at the hemicube's total.
 #include "solver/shooting/near_field.h"
 
 #include "support/adaptive_scenes.h"
