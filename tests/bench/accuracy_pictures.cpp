@@ -9,7 +9,8 @@
 // centre, and renders the cells from the scene's camera in false colour: the
 // relative luminance error |shown - reference| / reference, 0 to 50 %
 // (larger errors take the end colour). Cells under a solid (the floor under
-// a block) are left out. Prints the error statistics of the cells.
+// a block) are left out. Prints the error statistics of the cells and, per
+// face, how many are off by more than 10 % (too bright / too dark).
 #include "model/io/scene_json.h"
 #include "output/false_colour.h"
 #include "output/legend_overlay.h"
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -135,6 +137,9 @@ int main(int argc, char** argv)
     for (const test::FaceGeometry& f : faces)
         picture.faceIds.push_back(f.id);
     std::vector<double> errors;
+    // Where the large errors are: per face, the cells off by more than 10 %,
+    // too bright and too dark.
+    std::map<std::string, std::pair<int, int>> largeByFace;
     for (size_t i = 0; i < cells.size(); ++i) {
         const Cell& c = cells[i];
         const std::string& id = reference.faces()[static_cast<size_t>(c.face)].id;
@@ -144,6 +149,10 @@ int main(int argc, char** argv)
             continue;
         const double error = 100.0 * std::abs(test::luminance(*shown) - truth) / truth;
         errors.push_back(error);
+        if (error > 10.0) {
+            auto& [bright, dark] = largeByFace[id];
+            ++(test::luminance(*shown) > truth ? bright : dark);
+        }
         const auto base = static_cast<uint32_t>(picture.positions.size());
         const model::Vec3& n = reference.faces()[static_cast<size_t>(c.face)].normal;
         for (const model::Vec3& corner : c.corners) {
@@ -176,5 +185,8 @@ int main(int argc, char** argv)
     std::printf("%zu cells of %.3f m: median %.2f %%, 90th %.2f %%, 99th %.2f %%, worst %.1f %% -> %s\n", errors.size(),
                 cellSize, percentile(errors, 0.5), percentile(errors, 0.9), percentile(errors, 0.99),
                 percentile(errors, 1.0), argv[2]);
+    std::printf("cells off by more than 10 %%, too bright / too dark:\n");
+    for (const auto& [id, counts] : largeByFace)
+        std::printf("  %-24s %5d / %5d\n", id.c_str(), counts.first, counts.second);
     return 0;
 }

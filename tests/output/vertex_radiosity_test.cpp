@@ -181,10 +181,10 @@ TEST(VertexRadiosity, ExtrapolationBringsBoundaryValuesCloserToTheRamp)
     addFloor(scene, "floor", 0, 1, 0, 1, "grey");
     const PreparedScene prepared = prepare(scene, 0.1);
     const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
-    SmoothingOptions extrapolate;
-    extrapolate.extrapolateBoundary = true;
-    const LitMesh plain = smoothLitMesh(prepared, values);
-    const LitMesh extrapolated = smoothLitMesh(prepared, values, extrapolate);
+    SmoothingOptions average;
+    average.extrapolateBoundary = false;
+    const LitMesh plain = smoothLitMesh(prepared, values, average);
+    const LitMesh extrapolated = smoothLitMesh(prepared, values);
     ASSERT_EQ(plain.vertexCount(), extrapolated.vertexCount());
     double plainError = 0.0, extrapolatedError = 0.0;
     for (size_t v = 0; v < plain.vertexCount(); ++v) {
@@ -198,10 +198,10 @@ TEST(VertexRadiosity, ExtrapolationBringsBoundaryValuesCloserToTheRamp)
     EXPECT_LT(extrapolatedError, 0.5 * plainError);
 }
 
-TEST(VertexRadiosity, DefaultsAverageBoundariesAndDoNotSmoothNeighbours)
+TEST(VertexRadiosity, DefaultsExtrapolateBoundariesAndDoNotSmoothNeighbours)
 {
     const SmoothingOptions defaults;
-    EXPECT_FALSE(defaults.extrapolateBoundary);
+    EXPECT_TRUE(defaults.extrapolateBoundary);
     EXPECT_EQ(defaults.neighbourPasses, 0);
 }
 
@@ -421,11 +421,11 @@ TEST(SmoothShading, OneShadingServesEveryRadiosityOfItsMesh)
     const std::vector<Rgb> first = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
     const std::vector<Rgb> second =
         elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 4.0 ? 0.5 : 7.0, 1.0, 2.0); });
-    SmoothingOptions extrapolating;
-    extrapolating.extrapolateBoundary = true;
+    SmoothingOptions averaging;
+    averaging.extrapolateBoundary = false;
     SmoothingOptions smoothing;
     smoothing.neighbourPasses = 2;
-    for (const SmoothingOptions& options : {SmoothingOptions{}, extrapolating, smoothing}) {
+    for (const SmoothingOptions& options : {SmoothingOptions{}, averaging, smoothing}) {
         const SmoothShading shading(prepared, options);
         EXPECT_EQ(shading.elementCount(), prepared.elements.size());
         LitMesh mesh = shading.litMesh(first);
