@@ -254,30 +254,10 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         }
     }
 
-    // Area-weighted average of the elements touching each vertex (§6): the
-    // terms in the order shade() sums them, the same for every radiosity.
-    const auto base = static_cast<uint32_t>(m_geometry.positions.size());
-    std::vector<std::vector<std::pair<uint32_t, double>>> terms(positions.size());
-    for (size_t k = 0; k < elements.size(); ++k) {
-        const auto e = static_cast<uint32_t>(elements[k]);
-        const double area = scene.elements[e].area;
-        for (int v : outlines[k])
-            terms[static_cast<size_t>(v)].emplace_back(e, area);
-    }
-    for (size_t v = 0; v < positions.size(); ++v) {
-        double weight = 0.0;
-        for (const auto& [e, area] : terms[v]) {
-            m_termElement.push_back(e);
-            m_termArea.push_back(area);
-            weight += area;
-        }
-        m_weight.push_back(weight);
-        m_termEnd.push_back(static_cast<uint32_t>(m_termElement.size()));
-    }
-
     // The output triangles, free of T-vertices.
     std::vector<std::array<int, 3>> triangles;
     std::vector<int> triangleFace;
+    std::vector<size_t> triangleElement; // index into `elements`
     for (size_t k = 0; k < elements.size(); ++k) {
         if (outlines[k].size() == 3)
             triangles.push_back({outlines[k][0], outlines[k][1], outlines[k][2]});
@@ -286,6 +266,17 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         const int face =
             scene.properties[static_cast<size_t>(scene.elements[static_cast<size_t>(elements[k])].properties)].face;
         triangleFace.resize(triangles.size(), face);
+        triangleElement.resize(triangles.size(), k);
+    }
+
+    // Area-weighted average of the elements touching each vertex (§6).
+    const auto base = static_cast<uint32_t>(m_geometry.positions.size());
+    std::vector<std::vector<std::pair<uint32_t, double>>> terms(positions.size());
+    for (size_t k = 0; k < elements.size(); ++k) {
+        const auto e = static_cast<uint32_t>(elements[k]);
+        const double area = scene.elements[e].area;
+        for (int v : outlines[k])
+            terms[static_cast<size_t>(v)].emplace_back(e, area);
     }
 
     // Boundary vertices (on an edge used by one triangle) and neighbours.
@@ -303,6 +294,49 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         neighbours[static_cast<size_t>(b)].push_back(a);
         if (uses == 1)
             boundary[static_cast<size_t>(a)] = boundary[static_cast<size_t>(b)] = 1;
+    }
+
+    // A shadow corner (PreparedScene::shadowCorners) is no one point of the
+    // picture: each element there takes its own copy of the vertex, valued
+    // by that element alone, never extrapolated.
+    std::vector<char> singular(positions.size(), 0);
+    for (const Vec3& p : scene.shadowCorners)
+        weld.forNear(p, [&](int id) {
+            if (near(positions[static_cast<size_t>(id)], p, options.weldTolerance))
+                singular[static_cast<size_t>(id)] = 1;
+        });
+    std::vector<char> claimed(positions.size(), 0);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        for (int& v : triangles[t]) {
+            const auto original = static_cast<size_t>(v);
+            if (original >= singular.size() || !singular[original])
+                continue;
+            const auto e = static_cast<uint32_t>(elements[triangleElement[t]]);
+            const std::vector<std::pair<uint32_t, double>> own{{e, scene.elements[e].area}};
+            if (!claimed[original]) {
+                claimed[original] = 1;
+                terms[original] = own;
+                neighbours[original].clear();
+                continue;
+            }
+            v = static_cast<int>(positions.size());
+            positions.push_back(positions[original]);
+            terms.push_back(own);
+            boundary.push_back(1);
+            neighbours.emplace_back();
+        }
+    }
+
+    // The terms in the order shade() sums them, the same for every radiosity.
+    for (size_t v = 0; v < positions.size(); ++v) {
+        double weight = 0.0;
+        for (const auto& [e, area] : terms[v]) {
+            m_termElement.push_back(e);
+            m_termArea.push_back(area);
+            weight += area;
+        }
+        m_weight.push_back(weight);
+        m_termEnd.push_back(static_cast<uint32_t>(m_termElement.size()));
     }
 
     // What the options need of the neighbourhood, in output vertex numbers.

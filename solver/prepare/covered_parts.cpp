@@ -1,6 +1,7 @@
 #include "solver/prepare/covered_parts.h"
 
 #include "solver/prepare/face_polygon.h"
+#include "solver/prepare/shadow_lines.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -19,24 +20,6 @@ using Polygon = std::vector<Vec3>;
 // Areas below this (m^2) are rounding: slivers along a contact line.
 constexpr double kNegligibleArea = model::kDistanceEpsilon * model::kDistanceEpsilon;
 
-// Keeps the part of a convex polygon where dot(m, x - a) >= 0.
-Polygon clipKeep(const Polygon& polygon, const Vec3& a, const Vec3& m)
-{
-    Polygon out;
-    const size_t n = polygon.size();
-    for (size_t i = 0; i < n; ++i) {
-        const Vec3& p = polygon[i];
-        const Vec3& q = polygon[(i + 1) % n];
-        const double dp = glm::dot(m, p - a);
-        const double dq = glm::dot(m, q - a);
-        if (dp >= 0.0)
-            out.push_back(p);
-        if ((dp >= 0.0) != (dq >= 0.0))
-            out.push_back(p + (q - p) * (dp / (dp - dq)));
-    }
-    return out;
-}
-
 // polygon - cover, as convex pieces: outside each edge of the cover in turn,
 // the rest going on to the next edge; what is inside every edge is covered.
 // Pieces thinner than the distance tolerance are dropped.
@@ -47,10 +30,10 @@ void subtract(const Polygon& polygon, const Polygon& cover, const Vec3& coverNor
     for (size_t k = 0; k < n && rest.size() >= 3; ++k) {
         const Vec3& a = cover[k];
         const Vec3 inward = glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a));
-        Polygon outside = cleanConvexLoop(clipKeep(rest, a, -inward));
+        Polygon outside = cleanConvexLoop(clipConvex(rest, a, -inward));
         if (outside.size() >= 3 && model::polygonArea(outside) > kNegligibleArea)
             out.push_back(std::move(outside));
-        rest = clipKeep(rest, a, inward);
+        rest = clipConvex(rest, a, inward);
     }
 }
 
@@ -119,13 +102,13 @@ public:
                 const Vec3 lo = m_origin + m_u * (u0 + i * size) + m_v * (v0 + j * size);
                 const Vec3 hi = lo + (m_u + m_v) * size;
                 if (i > 0)
-                    cell = clipKeep(cell, lo, m_u);
+                    cell = clipConvex(cell, lo, m_u);
                 if (i + 1 < m_nu)
-                    cell = clipKeep(cell, hi, -m_u);
+                    cell = clipConvex(cell, hi, -m_u);
                 if (j > 0)
-                    cell = clipKeep(cell, lo, m_v);
+                    cell = clipConvex(cell, lo, m_v);
                 if (j + 1 < m_nv)
-                    cell = clipKeep(cell, hi, -m_v);
+                    cell = clipConvex(cell, hi, -m_v);
                 cell = cleanConvexLoop(cell);
                 if (cell.size() >= 3 && model::polygonArea(cell) > kNegligibleArea)
                     m_cells[size_t(j) * size_t(m_nu) + size_t(i)].push_back({boxOf(cell), std::move(cell)});
@@ -184,7 +167,7 @@ double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& cove
     const size_t n = cover.size();
     for (size_t k = 0; k < n && common.size() >= 3; ++k) {
         const Vec3& a = cover[k];
-        common = clipKeep(common, a, glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a)));
+        common = clipConvex(common, a, glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a)));
     }
     return common.size() >= 3 ? model::polygonArea(common) : 0.0;
 }
@@ -207,7 +190,8 @@ PlaneKey keyOf(const Plane& plane, bool& flipped)
 
 } // namespace
 
-std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene)
+std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
+                                                            std::vector<Vec3>* shadowCorners)
 {
     const size_t count = scene.faces.size();
     std::vector<std::vector<Polygon>> pieces(count);
@@ -263,6 +247,21 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
             });
         }
         pieces[f] = grid.pieces();
+        // Where few solids stand on the face, its pieces are also cut along
+        // the lines where the solids' shadows begin at their feet
+        // (solver/prepare/shadow_lines.h). Under many, the lines would cut
+        // the face into slivers; there the cells and adaptive subdivision
+        // have to do.
+        if (covers.size() <= kCoversForCells) {
+            const ShadowLineLimits limits;
+            for (const ShadowLine& line :
+                 footShadowLines(scene, f, covers, limits.solidMinWidth * scene.patchSize, limits.maxLines)) {
+                cutAlong(pieces[f], line, normal, limits.cutMinWidth * scene.patchSize, limits.cutMinAngle);
+                if (shadowCorners &&
+                    std::find(shadowCorners->begin(), shadowCorners->end(), line.origin) == shadowCorners->end())
+                    shadowCorners->push_back(line.origin);
+            }
+        }
     }
     return pieces;
 }

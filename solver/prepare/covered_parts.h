@@ -20,7 +20,10 @@ namespace regio::solver {
 // the convex pieces of its polygon that the coplanar, opposite-facing faces
 // of solids leave uncovered, counter-clockwise around the face's normal. A
 // face nothing covers keeps its polygon as its one piece (bit-identical); a
-// face covered whole has none.
-std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene);
+// face covered whole has none. Where solids stand on a face, its pieces are
+// also cut along their shadow lines (solver/prepare/shadow_lines.h), whose
+// corners are added to `shadowCorners` when it is given.
+std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
+                                                            std::vector<Vec3>* shadowCorners = nullptr);
 
 } // namespace regio::solver

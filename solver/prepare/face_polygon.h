@@ -52,4 +52,24 @@ inline std::vector<model::Vec3> cleanConvexLoop(const std::vector<model::Vec3>& 
     return out;
 }
 
+// Keeps the part of a convex polygon where dot(m, x - a) >= 0, exactly: no
+// tolerance, so the parts kept on either side of a line meet on it.
+inline std::vector<model::Vec3> clipConvex(const std::vector<model::Vec3>& polygon, const model::Vec3& a,
+                                           const model::Vec3& m)
+{
+    std::vector<model::Vec3> out;
+    const size_t n = polygon.size();
+    for (size_t i = 0; i < n; ++i) {
+        const model::Vec3& p = polygon[i];
+        const model::Vec3& q = polygon[(i + 1) % n];
+        const double dp = glm::dot(m, p - a);
+        const double dq = glm::dot(m, q - a);
+        if (dp >= 0.0)
+            out.push_back(p);
+        if ((dp >= 0.0) != (dq >= 0.0))
+            out.push_back(p + (q - p) * (dp / (dp - dq)));
+    }
+    return out;
+}
+
 } // namespace regio::solver

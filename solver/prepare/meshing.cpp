@@ -149,7 +149,8 @@ void meshFaces(PreparedScene& scene)
     // points of patch edges are shared across the whole face, so its element
     // mesh is conforming. Only what no solid covers is meshed
     // (solver/prepare/covered_parts.h), as one conforming mesh of its pieces.
-    const std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene);
+    scene.shadowCorners.clear();
+    const std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene, &scene.shadowCorners);
     for (size_t f = 0; f < scene.faces.size(); ++f) {
         InputFace& face = scene.faces[f];
         face.firstPatch = int(scene.patches.size());

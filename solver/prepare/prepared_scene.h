@@ -225,6 +225,12 @@ struct PreparedScene {
     std::vector<Element> elements;
     std::vector<Vec3> pieceVertices; // a copy of `vertices`, then the split points of pieces
     std::vector<Piece> pieces;
+    // The foot corners of solids where shadow lines begin
+    // (solver/prepare/shadow_lines.h). The light around such a point depends
+    // on the direction it is approached from (umbra on one side, full light
+    // on the other), so the smooth output gives each element there its own
+    // value at the point instead of one average.
+    std::vector<Vec3> shadowCorners;
 
     Box3 bounds;            // of all geometry
     double patchSize = 0.5; // the settings it was meshed with

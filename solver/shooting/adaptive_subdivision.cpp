@@ -473,6 +473,7 @@ ActiveScene AdaptiveMesh::activeScene() const
     s.patches = m_scene.patches;
     s.bounds = m_scene.bounds;
     s.patchSize = m_scene.patchSize;
+    s.shadowCorners = m_scene.shadowCorners;
     s.elementsPerPatch = m_scene.elementsPerPatch;
     s.stats = m_scene.stats;
     const std::vector<int> active = activeElements();

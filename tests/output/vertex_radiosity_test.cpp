@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -203,6 +204,41 @@ TEST(VertexRadiosity, DefaultsExtrapolateBoundariesAndDoNotSmoothNeighbours)
     const SmoothingOptions defaults;
     EXPECT_TRUE(defaults.extrapolateBoundary);
     EXPECT_EQ(defaults.neighbourPasses, 0);
+}
+
+// Beside a shadow corner (PreparedScene::shadowCorners) the light depends on
+// the direction the corner is approached from: umbra on one side of a shadow
+// line, light on the other. No single value at the corner is right there.
+TEST(VertexRadiosity, AtAShadowCornerEveryElementKeepsItsOwnValue)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    PreparedScene prepared = prepare(scene, 0.25);
+    const Vec3 corner{0.5, 0.5, 0.0};
+    prepared.shadowCorners.push_back(corner);
+    // Every element its own value.
+    const std::vector<Rgb> values =
+        elementValues(prepared, [n = 0.0](const Element&) mutable { return Rgb(n += 1.0); });
+    std::set<float> around;
+    for (size_t e = 0; e < prepared.elements.size(); ++e)
+        for (int v : prepared.elements[e].vertices)
+            if (glm::length(prepared.vertices[size_t(v)] - corner) < 1e-12)
+                around.insert(float(values[e].x));
+    ASSERT_GT(around.size(), 2u) << "the corner is inside the floor's mesh";
+
+    const LitMesh mesh = smoothLitMesh(prepared, values);
+    std::multiset<float> atCorner;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v)
+        if (glm::length(glm::dvec3(mesh.positions[v]) - corner) < 1e-6)
+            atCorner.insert(mesh.radiosity[v].x);
+    EXPECT_EQ(std::set<float>(atCorner.begin(), atCorner.end()), around);
+    EXPECT_EQ(atCorner.size(), around.size()) << "one vertex per element there";
+    // Elsewhere nothing changed: the same mesh without the corner has one vertex there.
+    prepared.shadowCorners.clear();
+    const LitMesh plain = smoothLitMesh(prepared, values);
+    EXPECT_EQ(plain.vertexCount() + around.size() - 1, mesh.vertexCount());
+    EXPECT_EQ(plain.indices.size(), mesh.indices.size());
 }
 
 TEST(VertexRadiosity, ExtrapolatedValuesAreNeverNegative)
