@@ -351,7 +351,10 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
 
     // Emit the group's geometry: its vertices once each, then its triangles.
     const glm::vec3 normal = glm::normalize(toFloat(glm::normalize(planeNormal)));
+    const auto group = m_groupOf.empty() ? 0u : m_groupOf.back() + 1u;
     for (size_t v = 0; v < positions.size(); ++v) {
+        m_exact.push_back(positions[v]);
+        m_groupOf.push_back(group);
         m_geometry.positions.push_back(toFloat(positions[v]));
         m_geometry.normals.push_back(normal);
         m_geometry.reflectance.push_back(toFloat(reflectance));
@@ -373,6 +376,115 @@ SmoothShading::SmoothShading(const PreparedScene& scene, const SmoothingOptions&
     for (size_t g = 0; g < groups.keys.size(); ++g) {
         if (!groups.elements[g].empty())
             planGroup(scene, groups.keys[g].plane.normal, groups.keys[g].reflectance, groups.elements[g]);
+    }
+    closeCracksBetweenGroups();
+    m_exact = {};
+    m_groupOf = {};
+}
+
+void SmoothShading::closeCracksBetweenGroups()
+{
+    const size_t triangles = m_geometry.indices.size() / 3;
+    if (triangles == 0)
+        return;
+    // Open edges: used by one triangle (the groups share no vertex index).
+    std::unordered_map<uint64_t, int> uses;
+    double edgeLengthSum = 0.0;
+    for (size_t t = 0; t < triangles; ++t)
+        for (size_t c = 0; c < 3; ++c) {
+            const uint32_t a = m_geometry.indices[3 * t + c], b = m_geometry.indices[3 * t + (c + 1) % 3];
+            ++uses[edgeKey(int(std::min(a, b)), int(std::max(a, b)))];
+            edgeLengthSum += glm::length(m_exact[b] - m_exact[a]);
+        }
+    const double cell = std::max(edgeLengthSum / (3.0 * double(triangles)), 1e-6);
+    PointGrid grid(cell);
+    for (size_t v = 0; v < m_exact.size(); ++v)
+        grid.insert(m_exact[v], int(v));
+
+    std::vector<uint32_t> indices;
+    std::vector<int> triangleFace;
+    std::vector<int> candidates;
+    std::vector<std::pair<double, int>> onEdge;
+    std::vector<int> outline;
+    std::vector<std::array<int, 3>> fan;
+    const size_t original = m_exact.size();
+    for (size_t t = 0; t < triangles; ++t) {
+        outline.clear();
+        bool added = false;
+        for (size_t c = 0; c < 3; ++c) {
+            const uint32_t ia = m_geometry.indices[3 * t + c], ib = m_geometry.indices[3 * t + (c + 1) % 3];
+            outline.push_back(int(ia));
+            if (uses[edgeKey(int(std::min(ia, ib)), int(std::max(ia, ib)))] != 1)
+                continue;
+            const Vec3 a = m_exact[ia], d = m_exact[ib] - a;
+            const double length2 = glm::dot(d, d);
+            if (length2 <= 0.0)
+                continue;
+            const double length = std::sqrt(length2);
+            const int steps = int(std::ceil(length / cell));
+            candidates.clear();
+            for (int k = 0; k <= steps; ++k)
+                grid.forNear(a + d * (double(k) / steps), [&](int id) { candidates.push_back(id); });
+            std::sort(candidates.begin(), candidates.end());
+            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+            onEdge.clear();
+            const double margin = m_options.edgeTolerance / length;
+            for (int v : candidates) {
+                if (m_groupOf[size_t(v)] == m_groupOf[ia])
+                    continue;
+                const Vec3 p = m_exact[size_t(v)];
+                const double s = glm::dot(p - a, d) / length2;
+                if (s <= margin || s >= 1.0 - margin || glm::length(p - (a + d * s)) > m_options.edgeTolerance)
+                    continue;
+                // Several groups may have a vertex there: one is enough.
+                const bool known = std::any_of(onEdge.begin(), onEdge.end(), [&](const auto& e) {
+                    return near(m_exact[size_t(e.second)], p, m_options.weldTolerance);
+                });
+                if (!known)
+                    onEdge.emplace_back(s, v);
+            }
+            std::sort(onEdge.begin(), onEdge.end());
+            for (const auto& [s, v] : onEdge) {
+                // A vertex of this group at the very position of the other's.
+                const auto vertex = static_cast<uint32_t>(m_exact.size());
+                m_exact.push_back(m_exact[size_t(v)]);
+                m_groupOf.push_back(m_groupOf[ia]);
+                m_geometry.positions.push_back(m_geometry.positions[size_t(v)]);
+                m_geometry.normals.push_back(m_geometry.normals[ia]);
+                m_geometry.reflectance.push_back(m_geometry.reflectance[ia]);
+                m_onEdge.push_back({vertex, ia, ib, s});
+                outline.push_back(int(vertex));
+                added = true;
+            }
+        }
+        const int face = m_geometry.triangleFace[t];
+        if (!added) {
+            for (int v : outline)
+                indices.push_back(uint32_t(v));
+            triangleFace.push_back(face);
+            continue;
+        }
+        fan.clear();
+        const Vec3 normal = glm::cross(m_exact[size_t(outline[1])] - m_exact[size_t(outline[0])],
+                                       m_exact[size_t(outline.back())] - m_exact[size_t(outline[0])]);
+        triangulateConvex(outline, m_exact, glm::normalize(normal), fan);
+        for (const auto& f : fan) {
+            for (int v : f)
+                indices.push_back(uint32_t(v));
+            triangleFace.push_back(face);
+        }
+    }
+    m_geometry.indices = std::move(indices);
+    m_geometry.triangleFace = std::move(triangleFace);
+    // The new vertices average nothing themselves (shade() sets them from
+    // their edge); the per-vertex arrays still need an entry each.
+    for (size_t v = original; v < m_exact.size(); ++v) {
+        m_weight.push_back(0.0);
+        m_termEnd.push_back(m_termEnd.empty() ? 0u : m_termEnd.back());
+        if (!m_neighbourEnd.empty() || !m_boundary.empty()) {
+            m_boundary.push_back(0);
+            m_neighbourEnd.push_back(m_neighbourEnd.empty() ? 0u : m_neighbourEnd.back());
+        }
     }
 }
 
@@ -433,6 +545,8 @@ void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm
             value[v] = previous[v] + m_options.neighbourWeight * (mean - previous[v]);
         }
     }
+    for (const OnEdge& e : m_onEdge)
+        value[e.vertex] = value[e.a] * (1.0 - e.s) + value[e.b] * e.s;
     radiosity.resize(vertices);
     for (size_t v = 0; v < vertices; ++v)
         radiosity[v] = toFloat(value[v]);

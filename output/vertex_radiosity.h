@@ -13,6 +13,10 @@
 //     with T-vertices. Each element is re-triangulated with the vertices that
 //     lie on its edges, so the output has none: every interior edge of a group
 //     is shared by exactly two triangles and Gouraud shading shows no cracks.
+//     Where groups meet (a floor and a wall), the triangles along each
+//     group's outline also take the other groups' vertices on their edges,
+//     with values interpolated along the edge: the two sides meet vertex to
+//     vertex, so no pixel falls between them, and the shading is unchanged.
 //   - Values on a group's boundary are extrapolated from the inner vertices
 //     (the paper's option), so a gradient reaches the edge; the plain average
 //     is an option.
@@ -70,6 +74,10 @@ public:
 private:
     void planGroup(const PreparedScene& scene, const Vec3& planeNormal, const Rgb& reflectance,
                    const std::vector<int>& elements);
+    // Where two groups meet (a floor and a wall), each divides the common
+    // line at its own points: the triangles along a group's outline take the
+    // other groups' vertices on their edges, valued along the edge.
+    void closeCracksBetweenGroups();
 
     SmoothingOptions m_options;
     size_t m_elements = 0;
@@ -86,6 +94,16 @@ private:
     std::vector<char> m_boundary;
     std::vector<uint32_t> m_neighbourEnd;
     std::vector<uint32_t> m_neighbour;
+    // Vertices placed on a group's outline where another group has one: the
+    // value at `s` of the way from vertex a to vertex b (after the options).
+    struct OnEdge {
+        uint32_t vertex, a, b;
+        double s;
+    };
+    std::vector<OnEdge> m_onEdge;
+    // While building: every vertex's exact position and group.
+    std::vector<Vec3> m_exact;
+    std::vector<uint32_t> m_groupOf;
 };
 
 // The smooth lit mesh from per-element radiosity (W/m^2, one per element of

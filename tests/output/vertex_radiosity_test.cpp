@@ -241,6 +241,45 @@ TEST(VertexRadiosity, AtAShadowCornerEveryElementKeepsItsOwnValue)
     EXPECT_EQ(plain.indices.size(), mesh.indices.size());
 }
 
+// A floor of two faces (split at x = 0.3) meets a wall of one along y = 0:
+// each side divides the line at its own points. In the output, both meet
+// vertex to vertex there, so no pixel falls between them.
+TEST(VertexRadiosity, WhereAFloorMeetsAWallBothSidesShareEveryPointOfTheLine)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor-a", 0, 0.3, 0, 1, "grey");
+    addFloor(scene, "floor-b", 0.3, 1, 0, 1, "grey");
+    // The wall in the plane y = 0, facing +y, standing on the floor's edge.
+    addPolygon(scene, "wall", {{0, 0, 0}, {0, 0, 0.6}, {1, 0, 0.6}, {1, 0, 0}}, "grey");
+    const PreparedScene prepared = prepare(scene, 0.25);
+    const std::vector<Rgb> values = elementValues(prepared, [](const Element& e) { return ramp(e.centroid); });
+    const LitMesh mesh = smoothLitMesh(prepared, values);
+    const int wall = faceIndex(prepared, "wall.face");
+    ASSERT_GE(wall, 0);
+    // The segments of each side on the line y = 0, z = 0.
+    std::multiset<std::pair<float, float>> floorSide, wallSide;
+    std::set<float> floorPoints, wallPoints;
+    for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (size_t c = 0; c < 3; ++c) {
+            const glm::vec3 a = mesh.positions[mesh.indices[3 * t + c]];
+            const glm::vec3 b = mesh.positions[mesh.indices[3 * t + (c + 1) % 3]];
+            const bool onLine = std::abs(a.y) < 1e-6f && std::abs(a.z) < 1e-6f && std::abs(b.y) < 1e-6f &&
+                                std::abs(b.z) < 1e-6f && a.x != b.x;
+            if (!onLine)
+                continue;
+            const bool isWall = mesh.triangleFace[t] == wall;
+            (isWall ? wallSide : floorSide).insert({std::min(a.x, b.x), std::max(a.x, b.x)});
+            (isWall ? wallPoints : floorPoints).insert(a.x);
+            (isWall ? wallPoints : floorPoints).insert(b.x);
+        }
+    EXPECT_GT(floorPoints.size(), 5u) << "the two floor faces divide the line at more points than the wall";
+    EXPECT_EQ(floorPoints, wallPoints);
+    EXPECT_EQ(floorSide, wallSide);
+    // Each triangle along the line is fanned through the points it took.
+    EXPECT_GT(mesh.triangleCount(), prepared.elements.size());
+}
+
 TEST(VertexRadiosity, ExtrapolatedValuesAreNeverNegative)
 {
     model::Scene scene;
