@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -123,6 +124,36 @@ uint64_t edgeKey(int a, int b)
     return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
 }
 
+// The points of `grid` (ids into `positions`) that lie on the inside of the
+// segment a-b, within `tolerance` of it and farther than that from its ends,
+// as (fraction of the way from a, id), sorted along the segment. `cell` is
+// the grid's cell size; `candidates` is scratch space.
+void pointsOnSegment(const PointGrid& grid, const std::vector<Vec3>& positions, const Vec3& a, const Vec3& b,
+                     double cell, double tolerance, std::vector<int>& candidates,
+                     std::vector<std::pair<double, int>>& out)
+{
+    out.clear();
+    const Vec3 d = b - a;
+    const double length2 = glm::dot(d, d);
+    if (length2 <= 0.0)
+        return;
+    const double length = std::sqrt(length2);
+    const int steps = static_cast<int>(std::ceil(length / cell));
+    candidates.clear();
+    for (int k = 0; k <= steps; ++k)
+        grid.forNear(a + d * (static_cast<double>(k) / steps), [&](int id) { candidates.push_back(id); });
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    const double margin = tolerance / length;
+    for (int v : candidates) {
+        const Vec3& p = positions[static_cast<size_t>(v)];
+        const double t = glm::dot(p - a, d) / length2;
+        if (t > margin && t < 1.0 - margin && glm::length(p - (a + d * t)) <= tolerance)
+            out.emplace_back(t, v);
+    }
+    std::sort(out.begin(), out.end());
+}
+
 // Triangulates a convex polygon whose sides may hold collinear points (the
 // T-vertices) by clipping ears, never a degenerate one: each time the ear of
 // best shape (area over the squared side lengths) among those with a real
@@ -224,31 +255,8 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
             outlines[k].push_back(ia);
             if (edges.count(edgeKey(ib, ia)) != 0)
                 continue;
-            const Vec3 a = positions[static_cast<size_t>(ia)];
-            const Vec3 d = positions[static_cast<size_t>(ib)] - a;
-            const double length2 = glm::dot(d, d);
-            if (length2 <= 0.0)
-                continue;
-            const double length = std::sqrt(length2);
-            const int steps = static_cast<int>(std::ceil(length / cell));
-            candidates.clear();
-            for (int s = 0; s <= steps; ++s)
-                grid.forNear(a + d * (static_cast<double>(s) / steps), [&](int id) { candidates.push_back(id); });
-            std::sort(candidates.begin(), candidates.end());
-            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-            onEdge.clear();
-            const double tMargin = options.edgeTolerance / length;
-            for (int v : candidates) {
-                if (v == ia || v == ib)
-                    continue;
-                const Vec3 p = positions[static_cast<size_t>(v)];
-                const double t = glm::dot(p - a, d) / length2;
-                if (t <= tMargin || t >= 1.0 - tMargin)
-                    continue;
-                if (glm::length(p - (a + d * t)) <= options.edgeTolerance)
-                    onEdge.emplace_back(t, v);
-            }
-            std::sort(onEdge.begin(), onEdge.end());
+            pointsOnSegment(grid, positions, positions[static_cast<size_t>(ia)], positions[static_cast<size_t>(ib)],
+                            cell, options.edgeTolerance, candidates, onEdge);
             for (const auto& [t, v] : onEdge)
                 outlines[k].push_back(v);
         }
@@ -296,6 +304,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
             boundary[static_cast<size_t>(a)] = boundary[static_cast<size_t>(b)] = 1;
     }
 
+    const std::vector<std::array<int, 3>> welded = triangles;
     // A shadow corner (PreparedScene::shadowCorners) is no one point of the
     // picture: each element there takes its own copy of the vertex, valued
     // by that element alone, never extrapolated.
@@ -309,7 +318,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
     for (size_t t = 0; t < triangles.size(); ++t) {
         for (int& v : triangles[t]) {
             const auto original = static_cast<size_t>(v);
-            if (original >= singular.size() || !singular[original])
+            if (!singular[original])
                 continue;
             const auto e = static_cast<uint32_t>(elements[triangleElement[t]]);
             const std::vector<std::pair<uint32_t, double>> own{{e, scene.elements[e].area}};
@@ -360,6 +369,13 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         m_geometry.reflectance.push_back(toFloat(reflectance));
     }
     for (size_t t = 0; t < triangles.size(); ++t) {
+        // The edges on the group's outline, for closeCracksBetweenGroups (the
+        // welded corners: copies at shadow corners are no outline).
+        for (size_t c = 0; c < 3; ++c) {
+            const int a = welded[t][c], b = welded[t][(c + 1) % 3];
+            if (undirected[edgeKey(std::min(a, b), std::max(a, b))] == 1)
+                m_openEdges.push_back(static_cast<uint32_t>(m_geometry.indices.size() + c));
+        }
         for (int v : triangles[t])
             m_geometry.indices.push_back(base + static_cast<uint32_t>(v));
         m_geometry.triangleFace.push_back(triangleFace[t]);
@@ -380,23 +396,22 @@ SmoothShading::SmoothShading(const PreparedScene& scene, const SmoothingOptions&
     closeCracksBetweenGroups();
     m_exact = {};
     m_groupOf = {};
+    m_openEdges = {};
 }
 
 void SmoothShading::closeCracksBetweenGroups()
 {
-    const size_t triangles = m_geometry.indices.size() / 3;
-    if (triangles == 0)
+    if (m_openEdges.empty())
         return;
-    // Open edges: used by one triangle (the groups share no vertex index).
-    std::unordered_map<uint64_t, int> uses;
+    const size_t triangles = m_geometry.indices.size() / 3;
+    std::vector<uint8_t> open(triangles, 0); // bit c: edge c is on its group's outline
     double edgeLengthSum = 0.0;
-    for (size_t t = 0; t < triangles; ++t)
-        for (size_t c = 0; c < 3; ++c) {
-            const uint32_t a = m_geometry.indices[3 * t + c], b = m_geometry.indices[3 * t + (c + 1) % 3];
-            ++uses[edgeKey(int(std::min(a, b)), int(std::max(a, b)))];
-            edgeLengthSum += glm::length(m_exact[b] - m_exact[a]);
-        }
-    const double cell = std::max(edgeLengthSum / (3.0 * double(triangles)), 1e-6);
+    for (uint32_t i : m_openEdges) {
+        open[i / 3] |= uint8_t(1u << (i % 3));
+        edgeLengthSum +=
+            glm::length(m_exact[m_geometry.indices[i / 3 * 3 + (i % 3 + 1) % 3]] - m_exact[m_geometry.indices[i]]);
+    }
+    const double cell = std::max(edgeLengthSum / double(m_openEdges.size()), 1e-6);
     PointGrid grid(cell);
     for (size_t v = 0; v < m_exact.size(); ++v)
         grid.insert(m_exact[v], int(v));
@@ -414,40 +429,19 @@ void SmoothShading::closeCracksBetweenGroups()
         for (size_t c = 0; c < 3; ++c) {
             const uint32_t ia = m_geometry.indices[3 * t + c], ib = m_geometry.indices[3 * t + (c + 1) % 3];
             outline.push_back(int(ia));
-            if (uses[edgeKey(int(std::min(ia, ib)), int(std::max(ia, ib)))] != 1)
+            if (!(open[t] & (1u << c)))
                 continue;
-            const Vec3 a = m_exact[ia], d = m_exact[ib] - a;
-            const double length2 = glm::dot(d, d);
-            if (length2 <= 0.0)
-                continue;
-            const double length = std::sqrt(length2);
-            const int steps = int(std::ceil(length / cell));
-            candidates.clear();
-            for (int k = 0; k <= steps; ++k)
-                grid.forNear(a + d * (double(k) / steps), [&](int id) { candidates.push_back(id); });
-            std::sort(candidates.begin(), candidates.end());
-            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-            onEdge.clear();
-            const double margin = m_options.edgeTolerance / length;
-            for (int v : candidates) {
-                if (m_groupOf[size_t(v)] == m_groupOf[ia])
-                    continue;
-                const Vec3 p = m_exact[size_t(v)];
-                const double s = glm::dot(p - a, d) / length2;
-                if (s <= margin || s >= 1.0 - margin || glm::length(p - (a + d * s)) > m_options.edgeTolerance)
-                    continue;
-                // Several groups may have a vertex there: one is enough.
-                const bool known = std::any_of(onEdge.begin(), onEdge.end(), [&](const auto& e) {
-                    return near(m_exact[size_t(e.second)], p, m_options.weldTolerance);
-                });
-                if (!known)
-                    onEdge.emplace_back(s, v);
-            }
-            std::sort(onEdge.begin(), onEdge.end());
+            pointsOnSegment(grid, m_exact, m_exact[ia], m_exact[ib], cell, m_options.edgeTolerance, candidates, onEdge);
+            std::optional<Vec3> last;
             for (const auto& [s, v] : onEdge) {
+                // Another group's vertex; several groups may have one there.
+                const Vec3 p = m_exact[size_t(v)];
+                if (m_groupOf[size_t(v)] == m_groupOf[ia] || (last && near(*last, p, m_options.weldTolerance)))
+                    continue;
+                last = p;
                 // A vertex of this group at the very position of the other's.
                 const auto vertex = static_cast<uint32_t>(m_exact.size());
-                m_exact.push_back(m_exact[size_t(v)]);
+                m_exact.push_back(p);
                 m_groupOf.push_back(m_groupOf[ia]);
                 m_geometry.positions.push_back(m_geometry.positions[size_t(v)]);
                 m_geometry.normals.push_back(m_geometry.normals[ia]);
@@ -478,10 +472,11 @@ void SmoothShading::closeCracksBetweenGroups()
     m_geometry.triangleFace = std::move(triangleFace);
     // The new vertices average nothing themselves (shade() sets them from
     // their edge); the per-vertex arrays still need an entry each.
+    const bool neighbourhood = m_options.extrapolateBoundary || m_options.neighbourPasses > 0;
     for (size_t v = original; v < m_exact.size(); ++v) {
         m_weight.push_back(0.0);
         m_termEnd.push_back(m_termEnd.empty() ? 0u : m_termEnd.back());
-        if (!m_neighbourEnd.empty() || !m_boundary.empty()) {
+        if (neighbourhood) {
             m_boundary.push_back(0);
             m_neighbourEnd.push_back(m_neighbourEnd.empty() ? 0u : m_neighbourEnd.back());
         }

@@ -101,9 +101,11 @@ private:
         double s;
     };
     std::vector<OnEdge> m_onEdge;
-    // While building: every vertex's exact position and group.
+    // While building: every vertex's exact position and group, and the
+    // edges on the groups' outlines (as positions in m_geometry.indices).
     std::vector<Vec3> m_exact;
     std::vector<uint32_t> m_groupOf;
+    std::vector<uint32_t> m_openEdges;
 };
 
 // The smooth lit mesh from per-element radiosity (W/m^2, one per element of

@@ -206,6 +206,7 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
         if (scene.faces[f].polygon.size() >= 3)
             byPlane[keys[f]][flipped ? 1 : 0].push_back(f);
     }
+    const std::vector<size_t> lights = lightFaces(scene);
     for (size_t f = 0; f < count; ++f) {
         const Polygon& polygon = scene.faces[f].polygon;
         if (polygon.size() < 3)
@@ -252,10 +253,10 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
         // (solver/prepare/shadow_lines.h). Under many, the lines would cut
         // the face into slivers; there the cells and adaptive subdivision
         // have to do.
-        if (covers.size() <= kCoversForCells) {
+        if (covers.size() <= kCoversForCells && !lights.empty()) {
             const ShadowLineLimits limits;
             for (const ShadowLine& line :
-                 footShadowLines(scene, f, covers, limits.solidMinWidth * scene.patchSize, limits.maxLines)) {
+                 footShadowLines(scene, f, covers, lights, limits.solidMinWidth * scene.patchSize, limits.maxLines)) {
                 cutAlong(pieces[f], line, normal, limits.cutMinWidth * scene.patchSize, limits.cutMinAngle);
                 if (shadowCorners &&
                     std::find(shadowCorners->begin(), shadowCorners->end(), line.origin) == shadowCorners->end())

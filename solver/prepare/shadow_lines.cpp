@@ -1,12 +1,14 @@
 #include "solver/prepare/shadow_lines.h"
 
 #include "solver/prepare/face_polygon.h"
+#include "solver/shooting/energy_balance.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 namespace regio::solver {
@@ -38,9 +40,13 @@ std::vector<Vec3> risingEdgeEnds(const PreparedScene& scene, size_t cover, const
 {
     const InputFace& coverFace = scene.faces[cover];
     std::vector<Vec3> ends;
-    for (size_t h = 0; h < scene.faces.size(); ++h) {
+    // The faces are in scene order, so the part's faces are the run around
+    // the cover that starts faceInPart places before it.
+    for (size_t h = cover - size_t(coverFace.faceInPart); h < scene.faces.size(); ++h) {
         const InputFace& face = scene.faces[h];
-        if (h == cover || face.object != coverFace.object || face.part != coverFace.part)
+        if (face.object != coverFace.object || face.part != coverFace.part)
+            break;
+        if (h == cover)
             continue;
         const Polygon& loop = face.polygon;
         for (size_t i = 0; i < loop.size(); ++i) {
@@ -113,26 +119,29 @@ double width(const Polygon& polygon)
 // two cosines over pi d^2 from its centroid. Only to rank lights at a point.
 double directLight(const PreparedScene& scene, size_t light, const Vec3& x, const Vec3& n)
 {
-    const Polygon& polygon = scene.faces[light].polygon;
-    Vec3 centroid(0.0);
-    for (const Vec3& p : polygon)
-        centroid += p;
-    centroid /= double(polygon.size());
-    const Vec3 d = centroid - x;
+    const Vec3 d = model::polygonCentroid(scene.faces[light].polygon) - x;
     const double d2 = glm::dot(d, d);
     if (d2 <= 0.0)
         return 0.0;
     const double cosHere = glm::dot(n, d) / std::sqrt(d2);
     const double cosThere = -glm::dot(scene.properties[light].plane.normal, d) / std::sqrt(d2);
-    const Rgb& emission = scene.properties[light].emission;
-    const double luminance = 0.2126 * emission.x + 0.7152 * emission.y + 0.0722 * emission.z;
-    return std::max(0.0, cosHere) * std::max(0.0, cosThere) * luminance * scene.faces[light].area / (M_PI * d2);
+    return std::max(0.0, cosHere) * std::max(0.0, cosThere) * luminance(scene.properties[light].emission) *
+           scene.faces[light].area / (std::numbers::pi * d2);
 }
 
 } // namespace
 
+std::vector<size_t> lightFaces(const PreparedScene& scene)
+{
+    std::vector<size_t> lights;
+    for (size_t e = 0; e < scene.faces.size(); ++e)
+        if (scene.properties[e].emits() && scene.faces[e].polygon.size() >= 3)
+            lights.push_back(e);
+    return lights;
+}
+
 std::vector<ShadowLine> footShadowLines(const PreparedScene& scene, size_t face, std::span<const size_t> covers,
-                                        double minWidth, size_t maxLines)
+                                        std::span<const size_t> lights, double minWidth, size_t maxLines)
 {
     std::vector<ShadowLine> lines;
     const Plane& plane = scene.properties[face].plane;
@@ -143,11 +152,6 @@ std::vector<ShadowLine> footShadowLines(const PreparedScene& scene, size_t face,
     for (const Vec3& p : polygon)
         for (const Vec3& q : polygon)
             farthest = std::max(farthest, glm::length(p - q));
-
-    std::vector<size_t> lights;
-    for (size_t e = 0; e < scene.faces.size(); ++e)
-        if (scene.properties[e].emits() && scene.faces[e].polygon.size() >= 3)
-            lights.push_back(e);
 
     for (size_t cover : covers) {
         const Polygon& footprint = scene.faces[cover].polygon;

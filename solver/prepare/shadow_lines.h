@@ -52,13 +52,16 @@ struct ShadowLine {
 };
 
 // The shadow lines on face `face` of the solids whose faces `covers` stand on
-// it (coplanar, back to back: solver/prepare/covered_parts.h), for every face
-// of the scene that emits. Solids whose footprint is narrower than
+// it (coplanar, back to back: solver/prepare/covered_parts.h), for the faces
+// `lights` (lightFaces). Solids whose footprint is narrower than
 // `minWidth` (twice its area over its perimeter) draw none. Past `maxLines`,
 // the lines of the lights that send the most direct light to their corner
 // are kept.
+// The faces of the scene that emit (with a polygon): the lights.
+std::vector<size_t> lightFaces(const PreparedScene& scene);
+
 std::vector<ShadowLine> footShadowLines(const PreparedScene& scene, size_t face, std::span<const size_t> covers,
-                                        double minWidth, size_t maxLines);
+                                        std::span<const size_t> lights, double minWidth, size_t maxLines);
 
 // Cuts the convex pieces along the line wherever its segment passes through a
 // piece's inside (the cut runs across that whole piece, which keeps pieces

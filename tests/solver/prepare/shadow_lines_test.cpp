@@ -70,7 +70,7 @@ TEST(ShadowLines, EveryLampVertexDrawsALineFromTheBoxsFootCornersAwayFromTheLamp
     const PreparedScene s = test::prepared(test::boxUnderLamp());
     const size_t floor = faceNamed(s, "floor.face");
     const std::vector<Vec3>& lamp = s.faces[faceNamed(s, "lamp.face")].polygon;
-    const std::vector<ShadowLine> lines = footShadowLines(s, floor, test::coversOf(s, floor), 0.0, 1000);
+    const std::vector<ShadowLine> lines = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.0, 1000);
     ASSERT_FALSE(lines.empty());
     std::set<std::pair<double, double>> corners;
     for (const ShadowLine& line : lines) {
@@ -111,8 +111,8 @@ TEST(ShadowLines, ASolidNarrowerThanTheMinimumWidthDrawsNone)
     const PreparedScene s = test::prepared(test::boxUnderLamp());
     const size_t floor = faceNamed(s, "floor.face");
     // The box's footprint is 0.6 m square: twice its area over its perimeter is 0.3 m.
-    EXPECT_FALSE(footShadowLines(s, floor, test::coversOf(s, floor), 0.29, 1000).empty());
-    EXPECT_TRUE(footShadowLines(s, floor, test::coversOf(s, floor), 0.31, 1000).empty());
+    EXPECT_FALSE(footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.29, 1000).empty());
+    EXPECT_TRUE(footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.31, 1000).empty());
 }
 
 TEST(ShadowLines, PastTheBudgetTheLinesOfTheBrightestLightAreKept)
@@ -121,7 +121,7 @@ TEST(ShadowLines, PastTheBudgetTheLinesOfTheBrightestLightAreKept)
     const size_t floor = faceNamed(s, "floor.face");
     const std::vector<Vec3>& bright = s.faces[faceNamed(s, "lamp.face")].polygon;
     const std::vector<Vec3>& dim = s.faces[faceNamed(s, "dim-lamp.face")].polygon;
-    const std::vector<ShadowLine> all = footShadowLines(s, floor, test::coversOf(s, floor), 0.0, 1000);
+    const std::vector<ShadowLine> all = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.0, 1000);
     int fromBright = 0, fromDim = 0;
     for (const ShadowLine& line : all) {
         fromBright += drawnBy(line, bright);
@@ -129,7 +129,7 @@ TEST(ShadowLines, PastTheBudgetTheLinesOfTheBrightestLightAreKept)
     }
     ASSERT_GT(fromBright, 2);
     ASSERT_GT(fromDim, 0);
-    const std::vector<ShadowLine> kept = footShadowLines(s, floor, test::coversOf(s, floor), 0.0, 3);
+    const std::vector<ShadowLine> kept = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.0, 3);
     ASSERT_EQ(kept.size(), 3u);
     for (const ShadowLine& line : kept)
         EXPECT_TRUE(drawnBy(line, bright));
@@ -185,8 +185,8 @@ TEST(ShadowLines, PreparationCutsTheFloorAlongThemAndListsTheCorners)
     }
     // Every cut the limits allow is made: no piece left would be cut again.
     const ShadowLineLimits limits;
-    const std::vector<ShadowLine> lines =
-        footShadowLines(s, floor, test::coversOf(s, floor), limits.solidMinWidth * s.patchSize, limits.maxLines);
+    const std::vector<ShadowLine> lines = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s),
+                                                          limits.solidMinWidth * s.patchSize, limits.maxLines);
     ASSERT_FALSE(lines.empty());
     const std::vector<std::vector<Vec3>> pieces = uncoveredPieces(s)[floor];
     EXPECT_GT(pieces.size(), 4u) << "more than the four around the footprint";
