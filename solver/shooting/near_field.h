@@ -4,9 +4,11 @@
 // a patch (a block's foot next to a floor patch) it shares the light by how
 // they look from that one point, and the patch's elements all send alike.
 // For such receivers the sharing is taken from Lambert's contour formula
-// instead: the form factor from the element's centroid to each element of
-// the shooter (clipped to the front of the receiver's plane), so
-// the shooter's elements send their own unshot radiosity where it lands.
+// instead: the form factor between the element and each element of the
+// shooter, taken on the smaller of the two (a ceiling element 35 cm across
+// over a lamp element 12 cm across, 2 cm below it, sees that element from
+// its centroid anywhere from not at all to filling its view), so the
+// shooter's elements send their own unshot radiosity where it lands.
 //
 // The near receivers keep the contour formula's factors: the hemicube's
 // total for them carries its proximity error (a floor patch's centre sees a

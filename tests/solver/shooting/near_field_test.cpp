@@ -30,6 +30,30 @@ double cornerFormFactor(double a, double b, double c)
            (2.0 * std::numbers::pi);
 }
 
+// The vertices of an element.
+std::vector<Vec3> triangleOf(const PreparedScene& s, const Element& e)
+{
+    return {s.vertices[size_t(e.vertices[0])], s.vertices[size_t(e.vertices[1])], s.vertices[size_t(e.vertices[2])]};
+}
+
+// F(from -> to) without occlusion: the point-to-polygon factor averaged over
+// `from` by the midpoint rule on a 24 x 24 grid of sub-triangles.
+double meanFormFactor(const PreparedScene& s, const Element& from, const Element& to)
+{
+    const std::vector<Vec3> a = triangleOf(s, from), b = triangleOf(s, to);
+    constexpr int n = 24;
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; i + j < n; ++j)
+            for (int up = 0; up < (i + j + 1 < n ? 2 : 1); ++up) {
+                const double u = (i + (up ? 2.0 : 1.0) / 3.0) / n, v = (j + (up ? 2.0 : 1.0) / 3.0) / n;
+                sum += pointToPolygonFormFactor(a[0] + u * (a[1] - a[0]) + v * (a[2] - a[0]), from.normal, b);
+                ++count;
+            }
+    return sum / count;
+}
+
 } // namespace
 
 TEST(NearField, ThePointToPolygonFactorIsTheClosedFormOfARectangleOverACorner)
@@ -87,15 +111,13 @@ TEST(NearField, NearReceiversTakeTheContourFactorsAndTheFarOnesTheRestOfTheHemic
         EXPECT_EQ(s.faces[size_t(s.elements[elements[entry]].properties)].id.rfind("box.", 0), 0u)
             << "only the box's elements face the floor patch from nearby";
     }
-    // The near factors are the contour formula's, from the receiver's centroid.
+    // The near factors are the contour formula's mean over the shooter
+    // element's points (taken on the smaller of the two elements).
     for (const NearTerm& t : near) {
         const Element& receiver = s.elements[elements[t.entry]];
         const Element& from = s.elements[size_t(patch.firstElement + t.shooterElement)];
-        const std::vector<Vec3> triangle{s.vertices[size_t(from.vertices[0])], s.vertices[size_t(from.vertices[1])],
-                                         s.vertices[size_t(from.vertices[2])]};
-        EXPECT_NEAR(t.factor,
-                    pointToPolygonFormFactor(receiver.centroid, receiver.normal, triangle) * receiver.area / from.area,
-                    1e-15);
+        const double truth = meanFormFactor(s, from, receiver);
+        EXPECT_NEAR(t.factor, truth, 0.005 + 0.1 * truth);
     }
     // Each shooter element: its near factors plus its far share of the rest
     // is the hemicube's total.
@@ -109,4 +131,46 @@ TEST(NearField, NearReceiversTakeTheContourFactorsAndTheFarOnesTheRestOfTheHemic
         sent[size_t(t.shooterElement)] += t.factor;
     for (size_t e = 0; e < sent.size(); ++e)
         EXPECT_NEAR(sent[e] + farScale[e] * far, total, 1e-12);
+}
+
+TEST(NearField, ALampElementJustUnderALargeCeilingElementSendsItWhatItSeesOfIt)
+{
+    // A lamp panel 2 cm under the ceiling, its elements a few times smaller
+    // than the ceiling's. From a ceiling element's centroid a lamp element
+    // may fill the view or not be seen at all, wherever the two lie, so a
+    // factor taken there is off by many times. The factors are the mean of
+    // what the lamp element's points see of the ceiling element, within 0.05
+    // of it (the contour formula at four points of the lamp element).
+    model::Scene scene;
+    test::addMaterial(scene, "wall", Rgb{0.7});
+    test::addMaterial(scene, "lamp", Rgb{0.8}, Rgb{12.0});
+    test::addBox(scene, "room", {0, 0, 0}, {5, 2.5, 4}, "wall", true);
+    test::addBox(scene, "panel", {1.0, 2.44, 1.5}, {2.0, 2.48, 2.5}, "lamp");
+    scene.solver.patchSize = 0.5;
+    const PreparedScene s = test::prepared(scene);
+    std::vector<std::uint32_t> everything;
+    for (size_t e = 0; e < s.elements.size(); ++e)
+        everything.push_back(std::uint32_t(e));
+    int checked = 0;
+    double worst = 0.0;
+    for (size_t p = 0; p < s.patches.size(); ++p) {
+        const Patch& patch = s.patches[p];
+        if (s.faces[size_t(patch.properties)].id != "panel.body.py")
+            continue;
+        std::vector<double> factors(everything.size(), 1.0 / double(everything.size())); // a total of 1
+        std::vector<NearTerm> near;
+        std::vector<double> farScale;
+        correctNearField(s, int(p), everything, factors, near, farScale);
+        for (const NearTerm& t : near) {
+            const Element& to = s.elements[everything[t.entry]];
+            if (s.faces[size_t(to.properties)].id != "room.body.py")
+                continue;
+            const Element& from = s.elements[size_t(patch.firstElement + t.shooterElement)];
+            const double truth = meanFormFactor(s, from, to);
+            worst = std::max(worst, std::abs(t.factor - truth));
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 16) << "the premise: ceiling elements near the lamp's patches";
+    EXPECT_LT(worst, 0.05) << "taken at a ceiling element's centroid, up to 0.75";
 }
