@@ -17,4 +17,7 @@ int runCheck(int argc, char** argv);
 // `regio-solve solve ...`: the batch radiosity solve (solve_command.cpp).
 int runSolve(int argc, char** argv);
 
+// `regio-solve import MODEL OUT.json ...`: a model file into a scene (import_command.cpp).
+int runImport(int argc, char** argv);
+
 } // namespace regio::cli

@@ -18,6 +18,7 @@ const char* const kUsage =
     "Commands:\n"
     "  check SCENE.json...   check scene files and print every problem found\n"
     "  solve SCENE.json ...  compute the radiosity solution of a scene\n"
+    "  import MODEL OUT.json import a model file (OBJ, glTF, FBX, ...) as a scene\n"
     "\n"
     "Options:\n"
     "  -h, --help            show this help\n"
@@ -49,6 +50,8 @@ int main(int argc, char** argv)
         return runCheck(argc - 1, argv + 1);
     if (command == "solve")
         return runSolve(argc - 1, argv + 1);
+    if (command == "import")
+        return runImport(argc - 1, argv + 1);
     std::cerr << "regio-solve: unknown command '" << command << "'\n"
               << "Try 'regio-solve --help'.\n";
     return kExitFailure;

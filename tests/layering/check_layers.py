@@ -21,14 +21,15 @@ ALLOWED = {
     "model": {"model"},
     "solver": {"model", "solver"},
     "output": {"model", "solver", "output"},
-    "cli": {"model", "solver", "output", "cli"},
-    "editor": {"model", "solver", "output", "editor"},
+    "importer": {"model", "solver", "importer"},
+    "cli": {"model", "solver", "output", "importer", "cli"},
+    "editor": {"model", "solver", "output", "importer", "editor"},
     # Undo commands change the scene through the model's edit functions and
     # know the document, nothing else of the editor.
     "editor/document": {"model", "editor/document"},
 }
 QT_ALLOWED = ("editor",)
-PROJECT_FOLDERS = ("model", "solver", "output", "cli", "editor", "tests")
+PROJECT_FOLDERS = ("model", "solver", "output", "importer", "cli", "editor", "tests")
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
 # <QString>, <QtWidgets/QWidget>, <QtCore>: Qt names its headers after its classes and modules.

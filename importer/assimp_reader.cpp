@@ -1,0 +1,247 @@
+#include "importer/assimp_reader.h"
+
+#include "model/io/file_io.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <stb/stb_image.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace regio::importer {
+
+namespace {
+
+Rgb rgbOf(const aiColor4D& c) { return {double(c.r), double(c.g), double(c.b)}; }
+
+// The mean colour of the material's diffuse (or base colour) texture, from
+// the file beside the model or the one embedded in it; false when there is
+// none that stb can read.
+bool textureMean(const aiScene& scene, const aiMaterial& material, const std::string& modelPath, Rgb& mean)
+{
+    aiString name;
+    if (material.GetTexture(aiTextureType_BASE_COLOR, 0, &name) != AI_SUCCESS &&
+        material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != AI_SUCCESS)
+        return false;
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels = nullptr;
+    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
+        if (embedded->mHeight != 0)
+            return false; // raw texels: rare, left to the diffuse colour
+        pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(embedded->pcData), int(embedded->mWidth),
+                                       &width, &height, &channels, 3);
+    } else {
+        const std::filesystem::path file = std::filesystem::path(modelPath).parent_path() / name.C_Str();
+        pixels = stbi_load(file.string().c_str(), &width, &height, &channels, 3);
+    }
+    if (pixels == nullptr)
+        return false;
+    // Texels are sRGB: the mean of the linear values is the reflectance.
+    const auto linear = [](stbi_uc v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    Rgb sum{0.0};
+    const auto count = std::size_t(width) * std::size_t(height);
+    for (std::size_t i = 0; i < count; ++i)
+        sum += Rgb{linear(pixels[3 * i]), linear(pixels[3 * i + 1]), linear(pixels[3 * i + 2])};
+    stbi_image_free(pixels);
+    if (count == 0)
+        return false;
+    mean = sum / double(count);
+    return true;
+}
+
+SoupMaterial materialOf(const aiScene& scene, const aiMaterial& material, const std::string& modelPath,
+                        model::Diagnostics& warnings)
+{
+    SoupMaterial out;
+    aiString name;
+    if (material.Get(AI_MATKEY_NAME, name) == AI_SUCCESS)
+        out.name = name.C_Str();
+    aiColor4D colour;
+    if (material.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
+        material.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+        out.diffuse = rgbOf(colour);
+    if (material.Get(AI_MATKEY_COLOR_EMISSIVE, colour) == AI_SUCCESS) {
+        out.emission = rgbOf(colour);
+    }
+    aiString texture;
+    if (material.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
+        material.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
+        Rgb mean{0.0};
+        if (textureMean(scene, material, modelPath, mean)) {
+            // A texture multiplies the colour factor (glTF) or stands alone (OBJ: Kd is often white).
+            out.diffuse *= mean;
+            out.textured = true;
+        } else {
+            warnings.push_back(model::makeWarning("material '" + out.name + "': texture '" +
+                                                  std::string(texture.C_Str()) +
+                                                  "' could not be read; its diffuse colour is used"));
+        }
+    }
+    return out;
+}
+
+// An OFF file's header says how many vertices and faces follow; Assimp
+// believes it and reserves that much before reading a line, so a header
+// claiming 3.5e12 vertices in a file of 300 bytes eats the machine. Every
+// vertex takes at least six bytes ("0 0 0\n"), every face eight.
+std::optional<std::string> implausibleOffHeader(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    if (!(in >> magic) || (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF"))
+        return std::nullopt;
+    double vertices = 0.0, faces = 0.0;
+    if (!(in >> vertices >> faces))
+        return std::nullopt; // let the reader say what is wrong
+    const auto size = double(std::filesystem::file_size(path));
+    if (vertices * 6.0 + faces * 8.0 <= size)
+        return std::nullopt;
+    return "'" + path + "' claims " + std::to_string(static_cast<long long>(vertices)) + " vertices and " +
+           std::to_string(static_cast<long long>(faces)) + " faces in a file of " +
+           std::to_string(static_cast<long long>(size)) + " bytes";
+}
+
+// KHR_materials_emissive_strength by material name: the glTF reader of
+// Debian's Assimp (5.2) does not know the extension, and without it an
+// emitter of strength 5 would come in five times too dim. Read from the
+// file's JSON (a .gltf, or the first chunk of a .glb).
+std::map<std::string, double> gltfEmissiveStrengths(const std::string& path)
+{
+    std::map<std::string, double> out;
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext != ".gltf" && ext != ".glb")
+        return out;
+    auto read = model::readFile(path, model::kMaxSceneFileBytes, "glTF file");
+    if (!read)
+        return out; // Assimp will say what is wrong with it
+    std::string text = std::move(*read);
+    if (ext == ".glb") {
+        // 12-byte header, then the JSON chunk: length, type "JSON", bytes.
+        if (text.size() < 20 || text.compare(16, 4, "JSON") != 0)
+            return out;
+        std::uint32_t length = 0;
+        std::memcpy(&length, text.data() + 12, 4);
+        if (length > text.size() - 20)
+            return out;
+        text = text.substr(20, length);
+    }
+    const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, false);
+    if (!gltf.is_object() || !gltf.contains("materials") || !gltf["materials"].is_array())
+        return out;
+    for (const nlohmann::json& m : gltf["materials"]) {
+        if (!m.is_object() || !m.contains("extensions") || !m["extensions"].is_object())
+            continue;
+        const nlohmann::json& ext_ = m["extensions"];
+        if (!ext_.contains("KHR_materials_emissive_strength"))
+            continue;
+        const nlohmann::json& strength = ext_["KHR_materials_emissive_strength"];
+        if (strength.is_object() && strength.contains("emissiveStrength") && strength["emissiveStrength"].is_number())
+            out[m.value("name", std::string())] = strength["emissiveStrength"].get<double>();
+    }
+    return out;
+}
+
+} // namespace
+
+model::Result<ReadModel> readModelFile(const std::string& path, const ReadOptions& options)
+{
+    if (!std::filesystem::is_regular_file(path))
+        return model::makeError("'" + path + "' is not a readable file");
+    if (const auto claim = implausibleOffHeader(path))
+        return model::makeError(*claim);
+    Assimp::Importer importer;
+    // Points and lines are split off so that they can be counted and left out.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
+    const aiScene* scene =
+        importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
+    if (scene == nullptr)
+        return model::makeError("'" + path + "' could not be read: " + importer.GetErrorString());
+    if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0)
+        return model::makeError("'" + path + "' is incomplete (the reader gave up part way)");
+
+    ReadModel out;
+    model::Diagnostics warnings;
+    for (unsigned m = 0; scene->mMaterials && m < scene->mNumMaterials; ++m)
+        out.soup.materials.push_back(scene->mMaterials[m] ? materialOf(*scene, *scene->mMaterials[m], path, warnings)
+                                                          : SoupMaterial{});
+    if (out.soup.materials.empty())
+        out.soup.materials.push_back({});
+    for (const auto& [name, strength] : gltfEmissiveStrengths(path))
+        for (SoupMaterial& m : out.soup.materials)
+            if (m.name == name && strength >= 0.0)
+                m.emission *= strength;
+
+    const auto frame = [&](const aiVector3D& p) {
+        const Vec3 v = Vec3{double(p.x), double(p.y), double(p.z)} * options.scale;
+        return options.up == UpAxis::Z ? Vec3{v.x, v.z, -v.y} : v;
+    };
+    // Depth first through the node tree, every mesh instance with its node's
+    // whole transform: a model's object is a node with meshes.
+    struct Visit {
+        const aiNode* node;
+        aiMatrix4x4 transform;
+    };
+    std::vector<Visit> todo{{scene->mRootNode, scene->mRootNode ? scene->mRootNode->mTransformation : aiMatrix4x4()}};
+    while (!todo.empty()) {
+        const Visit visit = todo.back();
+        todo.pop_back();
+        if (visit.node == nullptr)
+            continue;
+        // Whatever a reader left dangling is stepped over, never followed.
+        for (unsigned c = visit.node->mChildren ? visit.node->mNumChildren : 0; c-- > 0;)
+            if (const aiNode* child = visit.node->mChildren[c])
+                todo.push_back({child, visit.transform * child->mTransformation});
+        for (unsigned k = 0; visit.node->mMeshes && k < visit.node->mNumMeshes; ++k) {
+            if (visit.node->mMeshes[k] >= scene->mNumMeshes || scene->mMeshes[visit.node->mMeshes[k]] == nullptr ||
+                scene->mMeshes[visit.node->mMeshes[k]]->mVertices == nullptr)
+                continue;
+            const aiMesh& mesh = *scene->mMeshes[visit.node->mMeshes[k]];
+            const std::string nodeName = visit.node->mName.C_Str();
+            const int meshIndex = int(out.soup.meshes.size());
+            out.soup.meshes.push_back({nodeName.empty() || nodeName == "RootNode" ? mesh.mName.C_Str() : nodeName});
+            ++out.counts.meshes;
+            const auto base = int(out.soup.positions.size());
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+                out.soup.positions.push_back(frame(visit.transform * mesh.mVertices[v]));
+            // A transform that mirrors (negative determinant) turns the winding.
+            const bool mirrored = visit.transform.Determinant() < 0.0f;
+            for (unsigned f = 0; mesh.mFaces && f < mesh.mNumFaces; ++f) {
+                const aiFace& face = mesh.mFaces[f];
+                if (face.mNumIndices != 3 || face.mIndices == nullptr) {
+                    ++out.counts.pointsAndLines;
+                    continue;
+                }
+                if (face.mIndices[0] >= mesh.mNumVertices || face.mIndices[1] >= mesh.mNumVertices ||
+                    face.mIndices[2] >= mesh.mNumVertices)
+                    return model::makeError("'" + path + "': mesh '" + std::string(mesh.mName.C_Str()) +
+                                            "' has a face with a vertex index out of range");
+                SoupTriangle t;
+                t.corners = {base + int(face.mIndices[0]), base + int(face.mIndices[mirrored ? 2 : 1]),
+                             base + int(face.mIndices[mirrored ? 1 : 2])};
+                t.material = mesh.mMaterialIndex < out.soup.materials.size() ? int(mesh.mMaterialIndex) : 0;
+                t.mesh = meshIndex;
+                out.soup.triangles.push_back(t);
+            }
+        }
+    }
+    if (out.soup.triangles.empty())
+        return model::makeError("'" + path + "' holds no triangles (" + std::to_string(out.counts.pointsAndLines) +
+                                " points or lines, " + std::to_string(out.counts.meshes) + " meshes)");
+    return {std::move(out), std::move(warnings)};
+}
+
+} // namespace regio::importer

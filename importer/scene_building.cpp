@@ -1,0 +1,269 @@
+#include "importer/scene_building.h"
+
+#include "model/geometry/geometry.h"
+#include "model/io/printable.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <set>
+#include <utility>
+
+namespace regio::importer {
+
+namespace {
+
+// Ids of every kind share one namespace: the second "light" is "light-2".
+class UniqueIds {
+public:
+    std::string take(const std::string& wanted)
+    {
+        std::string id = wanted;
+        for (int n = 2; m_used.contains(id); ++n)
+            id = wanted + "-" + std::to_string(n);
+        m_used.insert(id);
+        return id;
+    }
+
+private:
+    std::set<std::string> m_used;
+};
+
+int findRoot(std::vector<int>& parent, int i)
+{
+    while (parent[std::size_t(i)] != i) {
+        parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
+        i = parent[std::size_t(i)];
+    }
+    return i;
+}
+
+// Closed: every edge runs once each way (two faces, consistent winding).
+bool closed(const model::Part& part)
+{
+    std::map<std::pair<int, int>, int> directed;
+    for (const model::Face& f : part.faces)
+        for (std::size_t i = 0; i < f.loop.size(); ++i)
+            ++directed[{f.loop[i], f.loop[(i + 1) % f.loop.size()]}];
+    return std::all_of(directed.begin(), directed.end(), [&](const auto& e) {
+        const auto back = directed.find({e.first.second, e.first.first});
+        return e.second == 1 && back != directed.end() && back->second == 1;
+    });
+}
+
+// Faces of one surface wound alike: across an edge two faces share, the edge
+// must run opposite ways. Within each edge-connected patch of faces, the
+// orientation most of its area has in the file wins; a closed part is then
+// turned so its normals point out (positive volume). Returns the faces turned.
+std::size_t orientConsistently(model::Part& part)
+{
+    const std::size_t n = part.faces.size();
+    std::map<std::pair<int, int>, std::vector<std::pair<std::size_t, bool>>>
+        edges; // (low, high) -> (face, runs low->high)
+    for (std::size_t f = 0; f < n; ++f) {
+        const auto& loop = part.faces[f].loop;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const int a = loop[i], b = loop[(i + 1) % loop.size()];
+            edges[{std::min(a, b), std::max(a, b)}].push_back({f, a < b});
+        }
+    }
+    std::vector<std::vector<std::pair<std::size_t, bool>>> neighbours(n); // (face, same direction)
+    for (const auto& [edge, uses] : edges)
+        if (uses.size() == 2 && uses[0].first != uses[1].first) {
+            const bool same = uses[0].second == uses[1].second;
+            neighbours[uses[0].first].push_back({uses[1].first, same});
+            neighbours[uses[1].first].push_back({uses[0].first, same});
+        }
+    const auto area = [&](std::size_t f) {
+        return model::polygonArea(model::loopPositions(part.vertices, part.faces[f].loop));
+    };
+    std::vector<int> flip(n, -1);
+    for (std::size_t seed = 0; seed < n; ++seed) {
+        if (flip[seed] >= 0)
+            continue;
+        std::vector<std::size_t> patch{seed};
+        flip[seed] = 0;
+        for (std::size_t k = 0; k < patch.size(); ++k)
+            for (const auto& [other, same] : neighbours[patch[k]])
+                if (flip[other] < 0) {
+                    flip[other] = flip[patch[k]] ^ int(same);
+                    patch.push_back(other);
+                }
+        double turned = 0.0, kept = 0.0;
+        for (const std::size_t f : patch)
+            (flip[f] ? turned : kept) += area(f);
+        if (turned > kept)
+            for (const std::size_t f : patch)
+                flip[f] ^= 1;
+    }
+    for (std::size_t f = 0; f < n; ++f)
+        if (flip[f])
+            std::reverse(part.faces[f].loop.begin(), part.faces[f].loop.end());
+    if (closed(part)) {
+        double volume = 0.0; // six times the signed volume, by the divergence theorem
+        for (const model::Face& face : part.faces)
+            for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
+                volume += glm::dot(
+                    part.vertices[std::size_t(face.loop[0])],
+                    glm::cross(part.vertices[std::size_t(face.loop[i])], part.vertices[std::size_t(face.loop[i + 1])]));
+        if (volume < 0.0) {
+            for (std::size_t f = 0; f < n; ++f) {
+                std::reverse(part.faces[f].loop.begin(), part.faces[f].loop.end());
+                flip[f] ^= 1;
+            }
+        }
+    }
+    return std::size_t(std::count(flip.begin(), flip.end(), 1));
+}
+
+} // namespace
+
+std::string idFrom(const std::string& name, const std::string& fallback)
+{
+    std::string id;
+    for (const char c : name) {
+        const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+        if (keep)
+            id += c;
+        else if (!id.empty() && id.back() != '-')
+            id += '-';
+    }
+    while (!id.empty() && (id.back() == '-' || id.back() == '.'))
+        id.pop_back();
+    return id.empty() ? fallback : id;
+}
+
+BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
+{
+    BuiltScene out;
+    UniqueIds ids;
+
+    // Materials, in the file's order, those that some face uses.
+    std::vector<int> usedMaterial(soup.materials.size(), 0);
+    for (const MergedFace& f : merged.faces)
+        usedMaterial[std::size_t(f.material)] = 1;
+    std::vector<std::string> materialId(soup.materials.size());
+    for (std::size_t m = 0; m < soup.materials.size(); ++m) {
+        if (!usedMaterial[m])
+            continue;
+        const SoupMaterial& from = soup.materials[m];
+        model::Material material;
+        material.id = ids.take(idFrom(from.name, "material-" + std::to_string(m + 1)));
+        material.name = model::validUtf8(from.name);
+        Rgb reflectance = glm::max(from.diffuse, Rgb{0.0});
+        const double top = std::max({reflectance.r, reflectance.g, reflectance.b});
+        if (top > kMaxImportedReflectance) {
+            reflectance *= kMaxImportedReflectance / top;
+            out.counts.clampedMaterials.push_back(material.id);
+            out.warnings.push_back(model::makeWarning("material '" + material.id + "': diffuse colour " +
+                                                      "at or near 1 scaled down to a reflectance of at most 0.95"));
+        }
+        material.reflectance = reflectance;
+        material.emission = glm::max(from.emission, Rgb{0.0});
+        if (from.textured)
+            out.counts.texturedMaterials.push_back(material.id);
+        materialId[m] = material.id;
+        out.scene.materials.push_back(std::move(material));
+    }
+    out.counts.materials = out.scene.materials.size();
+
+    // Faces by mesh, then by connected piece (faces sharing a vertex).
+    std::map<int, std::vector<std::size_t>> byMesh;
+    for (std::size_t f = 0; f < merged.faces.size(); ++f)
+        byMesh[merged.faces[f].mesh].push_back(f);
+    for (const auto& [mesh, faces] : byMesh) {
+        std::vector<int> parent(faces.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        std::map<int, int> firstFaceOfVertex;
+        for (std::size_t k = 0; k < faces.size(); ++k)
+            for (const int v : merged.faces[faces[k]].loop) {
+                const auto [it, fresh] = firstFaceOfVertex.emplace(v, int(k));
+                if (!fresh)
+                    parent[std::size_t(findRoot(parent, int(k)))] = findRoot(parent, it->second);
+            }
+        std::map<int, std::vector<std::size_t>> connected; // root -> faces, in file order
+        for (std::size_t k = 0; k < faces.size(); ++k)
+            connected[findRoot(parent, int(k))].push_back(faces[k]);
+        // An edge bounds at most two faces of a part: where a model has
+        // three (fins, touching boxes), a face that would be the third goes
+        // to the next part of the piece it fits in.
+        std::vector<std::vector<std::size_t>> pieces;
+        for (const auto& [root, members] : connected) {
+            std::vector<std::map<std::pair<int, int>, int>> edgeUses;
+            const std::size_t first = pieces.size();
+            for (const std::size_t f : members) {
+                const auto& loop = merged.faces[f].loop;
+                std::vector<std::pair<int, int>> edges;
+                for (std::size_t i = 0; i < loop.size(); ++i)
+                    edges.push_back({std::min(loop[i], loop[(i + 1) % loop.size()]),
+                                     std::max(loop[i], loop[(i + 1) % loop.size()])});
+                std::size_t into = 0;
+                while (into < edgeUses.size() && std::any_of(edges.begin(), edges.end(), [&](const auto& e) {
+                           const auto it = edgeUses[into].find(e);
+                           return it != edgeUses[into].end() && it->second >= 2;
+                       }))
+                    ++into;
+                if (into == edgeUses.size()) {
+                    edgeUses.emplace_back();
+                    pieces.emplace_back();
+                }
+                for (const auto& e : edges)
+                    ++edgeUses[into][e];
+                pieces[first + into].push_back(f);
+            }
+        }
+
+        const std::string meshName = soup.meshes[std::size_t(mesh)].name;
+        model::Object object;
+        object.id = ids.take(idFrom(meshName, "object-" + std::to_string(mesh + 1)));
+        object.name = model::validUtf8(meshName);
+        int pieceNumber = 0;
+        for (const std::vector<std::size_t>& members : pieces) {
+            ++pieceNumber;
+            model::Part part;
+            part.id =
+                ids.take(pieces.size() == 1 ? object.id + ".body" : object.id + ".part" + std::to_string(pieceNumber));
+            // The part's material: the one most of its faces use.
+            std::map<int, int> votes;
+            for (const std::size_t f : members)
+                ++votes[merged.faces[f].material];
+            const int common = std::max_element(votes.begin(), votes.end(), [](auto& a, auto& b) {
+                                   return a.second < b.second;
+                               })->first;
+            part.material = materialId[std::size_t(common)];
+            std::map<int, int> local;
+            int faceNumber = 0;
+            for (const std::size_t f : members) {
+                model::Face face;
+                face.id = ids.take(part.id + ".f" + std::to_string(++faceNumber));
+                for (const int v : merged.faces[f].loop) {
+                    const auto [it, fresh] = local.emplace(v, int(part.vertices.size()));
+                    if (fresh)
+                        part.vertices.push_back(merged.positions[std::size_t(v)]);
+                    face.loop.push_back(it->second);
+                }
+                if (merged.faces[f].material != common)
+                    face.material = materialId[std::size_t(merged.faces[f].material)];
+                const Rgb emission = soup.materials[std::size_t(merged.faces[f].material)].emission;
+                if (emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0)
+                    ++out.counts.emittingFaces;
+                part.faces.push_back(std::move(face));
+            }
+            out.counts.turnedFaces += orientConsistently(part);
+            if (closed(part))
+                ++out.counts.closedParts;
+            object.parts.push_back(std::move(part));
+        }
+        out.counts.parts += object.parts.size();
+        out.scene.objects.push_back(std::move(object));
+    }
+    out.counts.objects = out.scene.objects.size();
+    return out;
+}
+
+} // namespace regio::importer

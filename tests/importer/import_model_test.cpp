@@ -1,0 +1,288 @@
+// Whole imports (importer/import_model.h): model files in, valid scenes out,
+// or a clear refusal; never a crash.
+#include "importer/import_model.h"
+
+#include "model/geometry/geometry.h"
+#include "model/io/scene_json.h"
+#include "model/validation/validation.h"
+#include "solver/solver.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+using namespace regio;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A scratch directory per test, removed afterwards.
+struct Scratch {
+    fs::path dir;
+    Scratch()
+    {
+        dir = fs::temp_directory_path() /
+              ("regio-import-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir);
+    }
+    ~Scratch() { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& text) const
+    {
+        std::ofstream(dir / name, std::ios::binary) << text;
+        return (dir / name).string();
+    }
+};
+
+// The Cornell box as it circulates as OBJ: millimetres, quads, an open
+// front, a light with Ke, the back wall's corner 2 mm out of its plane, and
+// faces that refer to their vertices by negative (relative) indices.
+const char* const kCornellMtl = R"(newmtl white
+Kd 0.73 0.73 0.73
+newmtl red
+Kd 0.63 0.065 0.05
+newmtl green
+Kd 0.14 0.45 0.091
+newmtl light
+Kd 0.78 0.78 0.78
+Ke 17 12 4
+)";
+
+const char* const kCornellObj = R"(mtllib cornell.mtl
+o floor
+usemtl white
+v 552.8 0 0
+v 0 0 0
+v 0 0 559.2
+v 549.6 0 559.2
+f -4 -3 -2 -1
+o ceiling
+v 556 548.8 0
+v 556 548.8 559.2
+v 0 548.8 559.2
+v 0 548.8 0
+f -4 -3 -2 -1
+o back
+v 549.6 0 559.2
+v 0 0 559.2
+v 0 548.8 559.2
+v 556 550.8 559.2
+f -4 -3 -2 -1
+o right
+usemtl green
+v 0 0 559.2
+v 0 0 0
+v 0 548.8 0
+v 0 548.8 559.2
+f -4 -3 -2 -1
+o left
+usemtl red
+v 552.8 0 0
+v 549.6 0 559.2
+v 556 548.8 559.2
+v 556 548.8 0
+f -4 -3 -2 -1
+o light
+usemtl light
+v 343 548.7 227
+v 343 548.7 332
+v 213 548.7 332
+v 213 548.7 227
+f -4 -3 -2 -1
+)";
+
+} // namespace
+
+TEST(ImportModel, TheCornellBoxAsItCirculatesAsObjImportsChecksAndSolves)
+{
+    Scratch s;
+    s.write("cornell.mtl", kCornellMtl);
+    const std::string obj = s.write("cornell.obj", kCornellObj);
+    importer::ImportOptions options;
+    options.read.scale = 0.001;
+    auto imported = importer::importModel(obj, options);
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    const model::Scene& scene = imported->scene;
+    EXPECT_EQ(imported->report.merge.trianglesIn, 12u);
+    // Every quad one face but the back wall: its corner 2 mm out of plane is
+    // beyond the 1 mm tolerance, so its two triangles stay two faces.
+    EXPECT_EQ(imported->report.merge.faces, 7u);
+    EXPECT_EQ(imported->report.build.objects, 6u);
+    EXPECT_EQ(imported->report.build.emittingFaces, 1u);
+    EXPECT_EQ(imported->report.build.closedParts, 0u) << "walls are open shells";
+    std::map<std::string, model::Material> materials;
+    for (const model::Material& m : scene.materials)
+        materials[m.id] = m;
+    ASSERT_EQ(materials.count("light"), 1u);
+    EXPECT_EQ(materials["light"].emission, (model::Rgb{17, 12, 4}));
+    EXPECT_NEAR(materials["red"].reflectance.r, 0.63, 1e-6);
+    EXPECT_FALSE(model::hasErrors(model::validateScene(scene)));
+
+    solver::SolverOptions solve;
+    solve.maxIterations = 200;
+    auto solver = solver::Solver::create(scene, solve);
+    ASSERT_TRUE(solver);
+    const std::atomic<bool> cancel{false};
+    (*solver)->run({}, cancel);
+    double lit = 0.0;
+    for (const solver::FaceResult& f : (*solver)->faceResults())
+        if (f.id.rfind("floor", 0) == 0)
+            lit = f.radiosity.y;
+    // The Cornell box sample's floor reads 0.284 under a light of luminance
+    // 38; this light's is 12.5 (Ke 17 12 4), and the blocks are missing.
+    EXPECT_NEAR(lit, 0.284 * 12.5 / 38.0, 0.02);
+}
+
+TEST(ImportModel, AGroupAndAMaterialOfOneNameBothImport)
+{
+    Scratch s;
+    s.write("m.mtl", "newmtl light\nKd 0.5 0.5 0.5\nKe 5 5 5\n");
+    const std::string obj = s.write("m.obj",
+                                    "mtllib m.mtl\no light\nusemtl light\n"
+                                    "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 4 3 2\n");
+    auto imported = importer::importModel(obj);
+    ASSERT_TRUE(imported);
+    ASSERT_EQ(imported->scene.materials.size(), 1u);
+    ASSERT_EQ(imported->scene.objects.size(), 1u);
+    EXPECT_EQ(imported->scene.materials[0].id, "light");
+    EXPECT_EQ(imported->scene.objects[0].id, "light-2") << "one namespace: the second 'light' is renamed";
+    EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
+}
+
+TEST(ImportModel, AWhiteDiffuseColourIsScaledBelowOneWithAWarning)
+{
+    Scratch s;
+    s.write("m.mtl", "newmtl snow\nKd 1 1 1\n");
+    const std::string obj =
+        s.write("m.obj", "mtllib m.mtl\no slab\nusemtl snow\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 4 3 2\n");
+    auto imported = importer::importModel(obj);
+    ASSERT_TRUE(imported);
+    EXPECT_EQ(imported->scene.materials[0].reflectance, (model::Rgb{importer::kMaxImportedReflectance}));
+    ASSERT_EQ(imported->report.build.clampedMaterials.size(), 1u);
+    bool warned = false;
+    for (const model::Diagnostic& d : imported.diagnostics())
+        warned = warned || d.message.find("'snow'") != std::string::npos;
+    EXPECT_TRUE(warned);
+}
+
+TEST(ImportModel, WhatCannotBeReadIsRefusedWithTheReason)
+{
+    Scratch s;
+    auto missing = importer::importModel((s.dir / "nothing.obj").string());
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.diagnostics().front().message.find("not a readable file"), std::string::npos);
+
+    auto garbage = importer::importModel(s.write("noise.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
+    ASSERT_FALSE(garbage);
+    EXPECT_NE(garbage.diagnostics().front().message.find("could not be read"), std::string::npos);
+
+    auto lines = importer::importModel(s.write("lines.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2\nl 2 3\n"));
+    ASSERT_FALSE(lines);
+    EXPECT_FALSE(lines.diagnostics().empty());
+}
+
+TEST(ImportModel, EveryModelOfAssimpsTestModelsImportsValidOrIsRefusedWithAReason)
+{
+    // Debian's assimp-testmodels: hundreds of files in every format Assimp
+    // reads, none written here. Regions are left out: this is about reading.
+    const fs::path root = "/usr/share/assimp/models";
+    if (!fs::is_directory(root))
+        GTEST_SKIP() << "assimp-testmodels is not installed (scripts/dev.sh installs it)";
+    importer::ImportOptions options;
+    options.autoRegions = false;
+    int imported = 0, refused = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file())
+            continue;
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".png" || ext == ".jpg" || ext == ".bmp" || ext == ".tga" || ext == ".dds" || ext == ".mtl" ||
+            ext == ".txt" || ext == ".bin" || entry.file_size() > 4'000'000)
+            continue; // textures, sidecars and the few huge ones
+        auto result = importer::importModel(entry.path().string(), options);
+        if (result) {
+            ++imported;
+            EXPECT_FALSE(model::hasErrors(model::validateScene(result->scene))) << entry.path();
+        } else {
+            ++refused;
+            ASSERT_FALSE(result.diagnostics().empty()) << entry.path();
+            EXPECT_FALSE(result.diagnostics().front().message.empty()) << entry.path();
+        }
+    }
+    EXPECT_GT(imported, 150);
+    std::printf("assimp-testmodels: %d imported, %d refused with a reason\n", imported, refused);
+}
+
+TEST(ImportModel, AFaceWoundAgainstItsNeighboursIsTurnedAndASolidFacesOut)
+{
+    // A unit cube whose top is written clockwise, and the whole cube once
+    // more inside out: both come in as closed solids facing out.
+    Scratch s;
+    const std::string cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    const std::string topWrong = "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 7 8 4\nf 4 1 5 8\n";
+    const std::string inward = "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n";
+    for (const auto& [faces, turned] : {std::pair{topWrong, 1u}, std::pair{inward, 6u}}) {
+        auto imported = importer::importModel(s.write("cube.obj", "o cube\n" + cube + faces));
+        ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+        EXPECT_EQ(imported->report.build.turnedFaces, turned);
+        EXPECT_EQ(imported->report.build.closedParts, 1u);
+        EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
+        const model::Part& part = imported->scene.objects.at(0).parts.at(0);
+        for (const model::Face& f : part.faces) {
+            const auto corners = model::loopPositions(part.vertices, f.loop);
+            EXPECT_GT(glm::dot(model::polygonNormal(corners), model::polygonCentroid(corners) - model::Vec3{0.5}), 0.0)
+                << f.id << " faces out";
+        }
+    }
+}
+
+TEST(ImportModel, NamesInAnOldCodePageBecomeValidUtf8AndTheSceneSaves)
+{
+    // "café" in Latin-1, as an old tool writes it: the id keeps what is
+    // safe, the name keeps the rest with a replacement character.
+    Scratch s;
+    const std::string obj = s.write("m.obj", "o caf\xe9\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 4 3 2\n");
+    auto imported = importer::importModel(obj);
+    ASSERT_TRUE(imported);
+    const model::Object& object = imported->scene.objects.at(0);
+    EXPECT_EQ(object.id, "caf");
+    EXPECT_EQ(object.name, "caf\xEF\xBF\xBD");
+    EXPECT_TRUE(model::saveSceneFile(imported->scene, (s.dir / "m.json").string()));
+}
+
+TEST(ImportModel, AGltfEmitterKeepsItsEmissiveStrength)
+{
+    // A 1 m square lamp (two triangles facing up), emissiveFactor 1 0.5 0.25
+    // at KHR_materials_emissive_strength 8, base colour 0.8.
+    Scratch s;
+    const std::string gltf = s.write("lamp.gltf", R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_materials_emissive_strength"],
+  "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"name": "lamp", "mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+  "materials": [{"name": "panel", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1]},
+                 "emissiveFactor": [1, 0.5, 0.25],
+                 "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 8}}}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 0, 1]}],
+  "bufferViews": [{"buffer": 0, "byteLength": 72}],
+  "buffers": [{"byteLength": 72, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAAAAAAAAAAAAAIA/AACAPwAAAAAAAIA/AAAAAAAAAAAAAAAAAACAPwAAAAAAAIA/AACAPwAAAAAAAAAA"}]
+})");
+    auto imported = importer::importModel(gltf);
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    ASSERT_EQ(imported->scene.materials.size(), 1u);
+    const model::Material& panel = imported->scene.materials[0];
+    EXPECT_EQ(panel.id, "panel");
+    EXPECT_NEAR(panel.emission.r, 8.0, 1e-6);
+    EXPECT_NEAR(panel.emission.g, 4.0, 1e-6);
+    EXPECT_NEAR(panel.emission.b, 2.0, 1e-6);
+    EXPECT_NEAR(panel.reflectance.g, 0.8, 1e-6);
+    EXPECT_EQ(imported->report.merge.faces, 1u);
+    EXPECT_EQ(imported->report.build.emittingFaces, 1u);
+}
