@@ -5,6 +5,7 @@
 #include "model/geometry/geometry.h"
 #include "model/io/scene_json.h"
 #include "model/validation/validation.h"
+#include "output/png_writer.h"
 #include "solver/solver.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,8 @@
 #include <glm/geometric.hpp>
 
 #include <atomic>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -285,4 +288,40 @@ TEST(ImportModel, AGltfEmitterKeepsItsEmissiveStrength)
     EXPECT_NEAR(panel.reflectance.g, 0.8, 1e-6);
     EXPECT_EQ(imported->report.merge.faces, 1u);
     EXPECT_EQ(imported->report.build.emittingFaces, 1u);
+}
+
+TEST(ImportModel, ATexturedMaterialTakesItsTexturesMeanColour)
+{
+    // A 2 x 2 texture: white, black, and two mid-grey (sRGB 188, linear
+    // 0.5) texels, its mean in linear light 0.5; the MTL's Kd of 0.8 0.6 0.4
+    // multiplies it.
+    Scratch s;
+    output::Image texture(2, 2);
+    const std::uint8_t texels[] = {255, 0, 188, 188};
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t c = 0; c < 3; ++c)
+            texture.rgb[3 * i + c] = texels[i];
+    ASSERT_TRUE(output::writePng((s.dir / "wood.png").string(), texture));
+    s.write("m.mtl", "newmtl wood\nKd 0.8 0.6 0.4\nmap_Kd wood.png\n");
+    const std::string obj = s.write("m.obj",
+                                    "mtllib m.mtl\no slab\nusemtl wood\nvt 0 0\n"
+                                    "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1/1 4/1 3/1 2/1\n");
+    auto imported = importer::importModel(obj);
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    const model::Material& wood = imported->scene.materials.at(0);
+    const double mean = (1.0 + 0.0 + 2.0 * std::pow((188 / 255.0 + 0.055) / 1.055, 2.4)) / 4.0;
+    EXPECT_NEAR(mean, 0.5, 0.01) << "the premise: sRGB 188 is about half in linear light";
+    EXPECT_NEAR(wood.reflectance.r, 0.8 * mean, 1e-6);
+    EXPECT_NEAR(wood.reflectance.b, 0.4 * mean, 1e-6);
+    EXPECT_EQ(imported->report.build.texturedMaterials, std::vector<std::string>{"wood"});
+
+    // Without its texture file the colour stands in, with a warning.
+    fs::remove(s.dir / "wood.png");
+    auto missing = importer::importModel(obj);
+    ASSERT_TRUE(missing);
+    EXPECT_NEAR(missing->scene.materials.at(0).reflectance.r, 0.8, 1e-6);
+    bool warned = false;
+    for (const model::Diagnostic& d : missing.diagnostics())
+        warned = warned || d.message.find("wood.png") != std::string::npos;
+    EXPECT_TRUE(warned);
 }
