@@ -121,6 +121,24 @@ std::size_t orientConsistently(model::Part& part)
     return std::size_t(std::count(flip.begin(), flip.end(), 1));
 }
 
+// The faces (indices, ascending) that share an edge with another face
+// running the same way: one of each such pair. Empty when the part is wound
+// alike.
+std::vector<std::size_t> facesAtOdds(const model::Part& part)
+{
+    std::map<std::pair<int, int>, std::vector<std::size_t>> directed;
+    for (std::size_t f = 0; f < part.faces.size(); ++f) {
+        const auto& loop = part.faces[f].loop;
+        for (std::size_t i = 0; i < loop.size(); ++i)
+            directed[{loop[i], loop[(i + 1) % loop.size()]}].push_back(f);
+    }
+    std::set<std::size_t> odd;
+    for (const auto& [edge, faces] : directed)
+        if (faces.size() > 1)
+            odd.insert(faces.back());
+    return {odd.begin(), odd.end()};
+}
+
 } // namespace
 
 std::string idFrom(const std::string& name, const std::string& fallback)
@@ -222,12 +240,49 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
         model::Object object;
         object.id = ids.take(idFrom(meshName, "object-" + std::to_string(mesh + 1)));
         object.name = model::validUtf8(meshName);
-        int pieceNumber = 0;
-        for (const std::vector<std::size_t>& members : pieces) {
-            ++pieceNumber;
+        // The faces of a piece as a part: vertices and loops, wound alike.
+        const auto partOf = [&](const std::vector<std::size_t>& members, std::size_t& turned) {
             model::Part part;
-            part.id =
-                ids.take(pieces.size() == 1 ? object.id + ".body" : object.id + ".part" + std::to_string(pieceNumber));
+            std::map<int, int> local;
+            for (const std::size_t f : members) {
+                model::Face face;
+                for (const int v : merged.faces[f].loop) {
+                    const auto [it, fresh] = local.emplace(v, int(part.vertices.size()));
+                    if (fresh)
+                        part.vertices.push_back(merged.positions[std::size_t(v)]);
+                    face.loop.push_back(it->second);
+                }
+                part.faces.push_back(std::move(face));
+            }
+            turned = orientConsistently(part);
+            return part;
+        };
+        // Where no winding makes a piece consistent (a surface that meets
+        // itself the wrong way round), the faces still at odds go to a part
+        // of their own, and so on until every part can be wound alike.
+        std::vector<model::Part> parts;
+        std::vector<std::vector<std::size_t>> partFaces;
+        for (std::size_t p = 0; p < pieces.size(); ++p) {
+            std::vector<std::size_t> members = pieces[p];
+            std::size_t turned = 0;
+            model::Part part = partOf(members, turned);
+            const std::vector<std::size_t> odd = facesAtOdds(part);
+            if (!odd.empty() && odd.size() < members.size()) {
+                std::vector<std::size_t> kept, moved;
+                for (std::size_t k = 0; k < members.size(); ++k)
+                    (std::binary_search(odd.begin(), odd.end(), k) ? moved : kept).push_back(members[k]);
+                pieces.push_back(moved);
+                members = kept;
+                part = partOf(members, turned);
+            }
+            out.counts.turnedFaces += turned;
+            parts.push_back(std::move(part));
+            partFaces.push_back(std::move(members));
+        }
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            model::Part& part = parts[p];
+            const std::vector<std::size_t>& members = partFaces[p];
+            part.id = ids.take(parts.size() == 1 ? object.id + ".body" : object.id + ".part" + std::to_string(p + 1));
             // The part's material: the one most of its faces use.
             std::map<int, int> votes;
             for (const std::size_t f : members)
@@ -236,25 +291,15 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
                                    return a.second < b.second;
                                })->first;
             part.material = materialId[std::size_t(common)];
-            std::map<int, int> local;
-            int faceNumber = 0;
-            for (const std::size_t f : members) {
-                model::Face face;
-                face.id = ids.take(part.id + ".f" + std::to_string(++faceNumber));
-                for (const int v : merged.faces[f].loop) {
-                    const auto [it, fresh] = local.emplace(v, int(part.vertices.size()));
-                    if (fresh)
-                        part.vertices.push_back(merged.positions[std::size_t(v)]);
-                    face.loop.push_back(it->second);
-                }
-                if (merged.faces[f].material != common)
-                    face.material = materialId[std::size_t(merged.faces[f].material)];
-                const Rgb emission = soup.materials[std::size_t(merged.faces[f].material)].emission;
+            for (std::size_t k = 0; k < members.size(); ++k) {
+                const MergedFace& from = merged.faces[members[k]];
+                part.faces[k].id = ids.take(part.id + ".f" + std::to_string(k + 1));
+                if (from.material != common)
+                    part.faces[k].material = materialId[std::size_t(from.material)];
+                const Rgb emission = soup.materials[std::size_t(from.material)].emission;
                 if (emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0)
                     ++out.counts.emittingFaces;
-                part.faces.push_back(std::move(face));
             }
-            out.counts.turnedFaces += orientConsistently(part);
             if (closed(part))
                 ++out.counts.closedParts;
             object.parts.push_back(std::move(part));

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <string>
 
 using namespace regio;
@@ -324,4 +325,32 @@ TEST(ImportModel, ATexturedMaterialTakesItsTexturesMeanColour)
     for (const model::Diagnostic& d : missing.diagnostics())
         warned = warned || d.message.find("wood.png") != std::string::npos;
     EXPECT_TRUE(warned);
+}
+
+TEST(ImportModel, ASurfaceNoWindingMakesConsistentIsSplitIntoPartsThatAre)
+{
+    // A Moebius band of 24 quads: one-sided, so no choice of windings makes
+    // it one consistent part; the faces at odds go to a part of their own.
+    Scratch s;
+    std::string obj = "o band\n";
+    constexpr int n = 24;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / n, twist = a / 2.0;
+        for (const double w : {-0.2, 0.2}) {
+            const double r = 1.0 + w * std::cos(twist);
+            obj += "v " + std::to_string(r * std::cos(a)) + " " + std::to_string(w * std::sin(twist)) + " " +
+                   std::to_string(r * std::sin(a)) + "\n";
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        const int a0 = 2 * i + 1, a1 = 2 * i + 2;
+        // The last quad joins the first edge the other way round: the twist.
+        const int b0 = i + 1 < n ? 2 * (i + 1) + 1 : 2, b1 = i + 1 < n ? 2 * (i + 1) + 2 : 1;
+        obj += "f " + std::to_string(a0) + " " + std::to_string(a1) + " " + std::to_string(b1) + " " +
+               std::to_string(b0) + "\n";
+    }
+    auto imported = importer::importModel(s.write("band.obj", obj));
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    EXPECT_GE(imported->scene.objects.at(0).parts.size(), 2u);
+    EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
 }
