@@ -2,12 +2,13 @@
 // ... through Assimp) into a Regio scene file with automatic regions and
 // suggested BSP orders, and a report of what happened.
 #include "cli/commands.h"
+#include "cli/number_argument.h"
+#include "cli/scene_input.h"
 
 #include "importer/import_model.h"
 #include "model/io/file_io.h"
 #include "model/io/scene_json.h"
 
-#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -45,10 +46,7 @@ const char* const kImportUsage =
 std::optional<double> number(const std::string& text)
 {
     double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size() || !(value == value))
-        return std::nullopt;
-    return value;
+    return parseNumber(text, value) ? std::optional<double>(value) : std::nullopt;
 }
 
 int usageError(const std::string& message)
@@ -57,11 +55,11 @@ int usageError(const std::string& message)
     return kExitFailure;
 }
 
+// Names and messages from the model are escaped (formatDiagnostic).
 void print(const std::string& file, const model::Diagnostics& diagnostics)
 {
     for (const model::Diagnostic& d : diagnostics)
-        std::cerr << file << ": " << (d.pointer.empty() ? "" : d.pointer + ": ")
-                  << (d.isError() ? "error: " : "warning: ") << d.message << "\n";
+        std::cerr << formatDiagnostic(file, d) << "\n";
 }
 
 } // namespace

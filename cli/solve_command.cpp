@@ -1,6 +1,7 @@
 // `regio-solve solve`: the batch radiosity solve of one or more scene files,
 // with a progress line on standard error and an optional JSON report.
 #include "cli/commands.h"
+#include "cli/number_argument.h"
 #include "cli/scene_input.h"
 
 #include "model/io/printable.h"
@@ -97,14 +98,6 @@ int usageError(const std::string& message)
 {
     std::cerr << "regio-solve solve: " << message << "\nTry 'regio-solve solve --help'.\n";
     return kExitFailure;
-}
-
-template <typename T>
-bool parseNumber(const std::string& text, T& value)
-{
-    std::istringstream in(text);
-    in >> value;
-    return in && in.peek() == std::char_traits<char>::eof();
 }
 
 std::optional<bool> parseSwitch(const std::string& text)

@@ -25,15 +25,11 @@ namespace {
 
 Rgb rgbOf(const aiColor4D& c) { return {double(c.r), double(c.g), double(c.b)}; }
 
-// The mean colour of the material's diffuse (or base colour) texture, from
-// the file beside the model or the one embedded in it; false when there is
-// none that stb can read.
-bool textureMean(const aiScene& scene, const aiMaterial& material, const std::string& modelPath, Rgb& mean)
+// The mean colour of the texture `name` (a material's diffuse or base
+// colour texture), from the file beside the model or the one embedded in
+// it; false when stb cannot read it.
+bool textureMean(const aiScene& scene, const aiString& name, const std::string& modelPath, Rgb& mean)
 {
-    aiString name;
-    if (material.GetTexture(aiTextureType_BASE_COLOR, 0, &name) != AI_SUCCESS &&
-        material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != AI_SUCCESS)
-        return false;
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = nullptr;
     if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
@@ -81,7 +77,7 @@ SoupMaterial materialOf(const aiScene& scene, const aiMaterial& material, const 
     if (material.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
         material.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS) {
         Rgb mean{0.0};
-        if (textureMean(scene, material, modelPath, mean)) {
+        if (textureMean(scene, texture, modelPath, mean)) {
             // A texture multiplies the colour factor (glTF) or stands alone (OBJ: Kd is often white).
             out.diffuse *= mean;
             out.textured = true;

@@ -4,7 +4,6 @@
 #include "model/geometry/geometry.h"
 #include "model/validation/validation.h"
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -39,12 +38,10 @@ bool acceptable(const std::vector<Vec3>& positions, const std::vector<int>& loop
     const double area = 0.5 * glm::length(newell);
     if (!(area >= 10.0 * model::kMinFaceArea))
         return false;
-    Vec3 lo = corners.front(), hi = corners.front();
-    for (const Vec3& c : corners) {
-        lo = glm::min(lo, c);
-        hi = glm::max(hi, c);
-    }
-    const double flat = std::max(model::kDistanceEpsilon, model::kPlanarityWarning * glm::length(hi - lo));
+    model::Box3 box;
+    for (const Vec3& c : corners)
+        box.extend(c);
+    const double flat = std::max(model::kDistanceEpsilon, model::kPlanarityWarning * glm::length(box.size()));
     return model::planarityDeviation(corners) <= flat && model::isConvex(corners, newell / (2.0 * area), kOnLine);
 }
 
