@@ -108,3 +108,16 @@ TEST(ImportCommand, BadArgumentsAndModelsAreRefusedWithTheReason)
         EXPECT_NE(run.err.find("regio-solve import:"), std::string::npos) << run.err;
     }
 }
+
+TEST(ImportCommand, NamesFromTheModelAreEscapedInItsMessages)
+{
+    // A texture name with a terminal escape sequence: the warning that it
+    // cannot be read names it with the escape written out, not sent.
+    ScratchDir dir;
+    dir.write("m.mtl", "newmtl wood\nKd 0.5 0.5 0.5\nmap_Kd \x1b[2Jwood.png\n");
+    dir.write("m.obj", "mtllib m.mtl\no slab\nusemtl wood\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 4 3 2\n");
+    const CommandRun run = runRegioSolve({"import", "m.obj", "m.json", "-q"}, dir.path());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("\\x1B[2Jwood.png"), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find('\x1b'), std::string::npos);
+}
