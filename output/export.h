@@ -7,7 +7,7 @@
 //   .gltf  glTF 2.0 JSON + FILE.bin          (export_gltf.h)
 //   .glb   glTF 2.0 binary                   (export_gltf.h)
 //   .ply   binary PLY, colours + raw radiosity (export_ply.h)
-//   .obj   OBJ with vertex colours           (export_obj.h)
+//   .obj   OBJ with vertex colours (+ .mtl)  (export_obj.h)
 //   .png   the Gouraud-shaded picture        (software_render.h, png_writer.h)
 //
 // Display values (exposure, gamma, ambient, false colour) are applied to the

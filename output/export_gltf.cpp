@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <unordered_map>
 
 namespace regio::output {
 
@@ -75,8 +76,35 @@ struct GltfParts {
     std::string bin;
 };
 
+// glTF material of a scene material: an unlit white base (the vertex colours
+// are the baked light) with the physical values kept for Regio's importer in
+// extras, and the emission as glTF says it (a factor up to 1 times a
+// strength) for tools that look for lights.
+json materialJson(const LitMaterial& m)
+{
+    json material = {{"name", m.id.empty() ? std::string("radiosity (unlit vertex colours)") : m.id},
+                     {"pbrMetallicRoughness",
+                      {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
+                     {"extensions", {{"KHR_materials_unlit", json::object()}}},
+                     {"extras",
+                      {{"regio",
+                        {{"reflectance", {m.reflectance.x, m.reflectance.y, m.reflectance.z}},
+                         {"emission", {m.emission.x, m.emission.y, m.emission.z}}}}}}};
+    const float peak = std::max({m.emission.x, m.emission.y, m.emission.z});
+    if (peak > 0.0f) {
+        const glm::vec3 factor = m.emission / std::max(peak, 1.0f);
+        material["emissiveFactor"] = {factor.x, factor.y, factor.z};
+        if (peak > 1.0f)
+            material["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", peak}};
+    }
+    return material;
+}
+
 // Builds the JSON and the binary buffer. `bufferUri` empty = GLB (the buffer
-// is the file's BIN chunk).
+// is the file's BIN chunk). One node and mesh per object of the scene, one
+// primitive per input face with the face's material and vertices of its own
+// (readers such as Assimp copy a primitive's whole accessors, so shared ones
+// would multiply), so that a reader sees the faces apart.
 GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const std::string& bufferUri)
 {
     GltfParts parts;
@@ -91,17 +119,17 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
         return parts;
     }
 
-    const size_t n = mesh.vertexCount();
     json bufferViews = json::array();
     json accessors = json::array();
     std::string& bin = parts.bin;
 
-    auto addVec3 = [&](const std::vector<glm::vec3>& values, bool withBounds, auto transform) {
+    auto addVec3 = [&](const std::vector<uint32_t>& vertices, const std::vector<glm::vec3>& values, bool withBounds,
+                       auto transform) {
         const size_t offset = bin.size();
         glm::vec3 lo(std::numeric_limits<float>::max());
         glm::vec3 hi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& raw : values) {
-            const glm::vec3 v = transform(raw);
+        for (uint32_t i : vertices) {
+            const glm::vec3 v = transform(values[i]);
             appendFloat(bin, v.x);
             appendFloat(bin, v.y);
             appendFloat(bin, v.z);
@@ -112,7 +140,7 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
             {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset}, {"target", kArrayBuffer}});
         json accessor = {{"bufferView", bufferViews.size() - 1},
                          {"componentType", kFloat},
-                         {"count", values.size()},
+                         {"count", vertices.size()},
                          {"type", "VEC3"}};
         if (withBounds) {
             accessor["min"] = {lo.x, lo.y, lo.z};
@@ -126,29 +154,82 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
     // displays, not for glTF vertex colours).
     auto unit = [](const glm::vec3& v) { return glm::clamp(v, glm::vec3(0.0f), glm::vec3(1.0f)); };
 
-    const size_t position = addVec3(mesh.positions, true, same);
-    const size_t normal = addVec3(mesh.normals, false, same);
-    const size_t colour = addVec3(colours.linear, false, unit);
-    const size_t radiosity = addVec3(mesh.radiosity, false, same);
+    // One primitive: the triangles given (indices into mesh.indices / 3)
+    // with their vertices renumbered from 0.
+    auto addPrimitive = [&](const std::vector<size_t>& triangles, int material) {
+        std::vector<uint32_t> vertices;
+        std::unordered_map<uint32_t, uint32_t> local;
+        std::vector<uint32_t> indices;
+        for (size_t t : triangles) {
+            for (size_t k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.indices[3 * t + k];
+                auto [it, added] = local.try_emplace(v, static_cast<uint32_t>(vertices.size()));
+                if (added)
+                    vertices.push_back(v);
+                indices.push_back(it->second);
+            }
+        }
+        const size_t position = addVec3(vertices, mesh.positions, true, same);
+        const size_t normal = addVec3(vertices, mesh.normals, false, same);
+        const size_t colour = addVec3(vertices, colours.linear, false, unit);
+        const size_t radiosity = addVec3(vertices, mesh.radiosity, false, same);
+        // Indices: 16-bit when every index fits below the primitive-restart value.
+        const bool shortIndices = vertices.size() <= 0xFFFF;
+        const size_t indexOffset = bin.size();
+        for (uint32_t i : indices) {
+            if (shortIndices)
+                appendU16(bin, static_cast<uint16_t>(i));
+            else
+                appendU32(bin, i);
+        }
+        const size_t indexLength = bin.size() - indexOffset;
+        padTo4(bin, '\0');
+        bufferViews.push_back(
+            {{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indexLength}, {"target", kElementArrayBuffer}});
+        accessors.push_back({{"bufferView", bufferViews.size() - 1},
+                             {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
+                             {"count", indices.size()},
+                             {"type", "SCALAR"}});
+        return json{{"attributes",
+                     {{"POSITION", position}, {"NORMAL", normal}, {"COLOR_0", colour}, {"_RADIOSITY", radiosity}}},
+                    {"indices", accessors.size() - 1},
+                    {"material", material},
+                    {"mode", kTriangles}};
+    };
 
-    // Indices: 16-bit when every index fits below the primitive-restart value.
-    const bool shortIndices = n <= 0xFFFF;
-    const size_t indexOffset = bin.size();
-    for (uint32_t i : mesh.indices) {
-        if (shortIndices)
-            appendU16(bin, static_cast<uint16_t>(i));
-        else
-            appendU32(bin, i);
+    // Triangles by face, faces by object (in scene order).
+    std::vector<std::vector<size_t>> byFace(mesh.faceIds.size());
+    for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        byFace[static_cast<size_t>(mesh.triangleFace[t])].push_back(t);
+    const bool described = !mesh.faceObjects.empty() && !mesh.faceMaterials.empty();
+    std::vector<std::string> objects; // in order of first appearance
+    std::vector<std::vector<size_t>> facesOf;
+    std::unordered_map<std::string, size_t> objectIndex;
+    for (size_t f = 0; f < byFace.size(); ++f) {
+        if (byFace[f].empty())
+            continue;
+        const std::string object = described ? mesh.faceObjects[f] : std::string("radiosity solution");
+        auto [it, added] = objectIndex.try_emplace(object, objects.size());
+        if (added) {
+            objects.push_back(object);
+            facesOf.emplace_back();
+        }
+        facesOf[it->second].push_back(f);
     }
-    const size_t indexLength = bin.size() - indexOffset;
-    padTo4(bin, '\0');
-    bufferViews.push_back(
-        {{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indexLength}, {"target", kElementArrayBuffer}});
-    accessors.push_back({{"bufferView", bufferViews.size() - 1},
-                         {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
-                         {"count", mesh.indices.size()},
-                         {"type", "SCALAR"}});
-    const size_t indices = accessors.size() - 1;
+    json meshes = json::array();
+    json nodes = json::array();
+    json sceneNodes = json::array();
+    for (size_t o = 0; o < objects.size(); ++o) {
+        json primitives = json::array();
+        for (size_t f : facesOf[o]) {
+            json primitive = addPrimitive(byFace[f], described ? mesh.faceMaterials[f] : 0);
+            primitive["extras"] = {{"face", mesh.faceIds[f]}};
+            primitives.push_back(std::move(primitive));
+        }
+        meshes.push_back({{"name", objects[o]}, {"primitives", std::move(primitives)}});
+        nodes.push_back({{"name", objects[o]}, {"mesh", o}});
+        sceneNodes.push_back(o);
+    }
 
     json buffer = {{"byteLength", bin.size()}};
     if (!bufferUri.empty())
@@ -156,22 +237,24 @@ GltfParts buildGltf(const LitMesh& mesh, const DisplayColours& colours, const st
     doc["buffers"] = json::array({buffer});
     doc["bufferViews"] = std::move(bufferViews);
     doc["accessors"] = std::move(accessors);
-    doc["materials"] =
-        json::array({{{"name", "radiosity (unlit vertex colours)"},
-                      {"pbrMetallicRoughness",
-                       {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
-                      {"extensions", {{"KHR_materials_unlit", json::object()}}}}});
+    json materials = json::array();
+    bool strength = false;
+    if (described) {
+        for (const LitMaterial& m : mesh.materials) {
+            materials.push_back(materialJson(m));
+            strength = strength || materials.back()["extensions"].contains("KHR_materials_emissive_strength");
+        }
+    } else {
+        materials.push_back(materialJson(LitMaterial{}));
+        materials.back().erase("extras");
+    }
+    doc["materials"] = std::move(materials);
     doc["extensionsUsed"] = json::array({"KHR_materials_unlit"});
-    doc["meshes"] = json::array(
-        {{{"name", "radiosity solution"},
-          {"primitives",
-           json::array({{{"attributes",
-                          {{"POSITION", position}, {"NORMAL", normal}, {"COLOR_0", colour}, {"_RADIOSITY", radiosity}}},
-                         {"indices", indices},
-                         {"material", 0},
-                         {"mode", kTriangles}}})}}});
-    doc["nodes"] = json::array({{{"name", "radiosity solution"}, {"mesh", 0}}});
-    doc["scenes"] = json::array({{{"name", "radiosity solution"}, {"nodes", {0}}}});
+    if (strength)
+        doc["extensionsUsed"].push_back("KHR_materials_emissive_strength");
+    doc["meshes"] = std::move(meshes);
+    doc["nodes"] = std::move(nodes);
+    doc["scenes"] = json::array({{{"name", "radiosity solution"}, {"nodes", std::move(sceneNodes)}}});
     return parts;
 }
 
@@ -215,8 +298,9 @@ model::Check writeGltf(const std::string& path, const LitMesh& mesh, const Displ
     if (model::Check checked = checkWritable(path, mesh, colours); !checked)
         return checked;
 
+    const FileMesh file = fileMesh(mesh, colours);
     if (container == GltfContainer::Binary) {
-        const GltfParts parts = buildGltf(mesh, colours, "");
+        const GltfParts parts = buildGltf(file.mesh, file.colours, "");
         const std::string bytes = glb(parts);
         if (bytes.size() > std::numeric_limits<uint32_t>::max())
             return model::makeError("cannot write " + path +
@@ -226,7 +310,7 @@ model::Check writeGltf(const std::string& path, const LitMesh& mesh, const Displ
 
     const std::string binPath = gltfBufferPath(path);
     const std::string binName = std::filesystem::path(binPath).filename().string();
-    const GltfParts parts = buildGltf(mesh, colours, uriEncode(binName));
+    const GltfParts parts = buildGltf(file.mesh, file.colours, uriEncode(binName));
     if (!parts.bin.empty()) {
         if (model::Check written = model::writeFileAtomically(binPath, parts.bin); !written)
             return written;

@@ -3,8 +3,12 @@
 // in the common "v x y z r g b" extension (MeshLab, Blender, CloudCompare read
 // it): r g b are the display colour, display-encoded, in [0,1]. Normals as
 // "vn"; triangles grouped by input face ("g <face id>") in scene order, so a
-// user can pick a wall out of the model. No .mtl: the colour is per vertex.
-// Written atomically; errors name the path.
+// user can pick a wall out of the model and an importer sees the faces apart
+// (Assimp makes every group an object). Where the mesh knows the scene's
+// materials, FILE.mtl beside it holds them (Kd the reflectance, Ke the
+// emission in W/m^2) and every group names its own ("usemtl"). The parts of
+// faces that solids cover are filled in, black. Written atomically (the .mtl
+// before the .obj that names it); errors name the path.
 #include "output/lit_mesh.h"
 #include "output/tone_map.h"
 
@@ -14,5 +18,8 @@
 namespace regio::output {
 
 model::Check writeObj(const std::string& path, const LitMesh& mesh, const DisplayColours& colours);
+
+// The material file that writeObj(path, ...) writes beside `path`.
+std::string mtlPath(const std::string& objPath);
 
 } // namespace regio::output

@@ -19,6 +19,21 @@ inline model::Check checkWritable(const std::string& path, const LitMesh& mesh, 
     return model::success();
 }
 
+// What a model file holds: the lit mesh with the parts of faces that solids
+// cover filled in (withCoveredParts), their vertices black, so that a floor
+// under a block comes out whole.
+struct FileMesh {
+    LitMesh mesh;
+    DisplayColours colours;
+};
+
+inline FileMesh fileMesh(const LitMesh& mesh, const DisplayColours& colours)
+{
+    FileMesh out{withCoveredParts(mesh), colours};
+    out.colours.linear.resize(out.mesh.vertexCount(), glm::vec3(0.0f));
+    return out;
+}
+
 // Header comments of PLY and OBJ end at the line: keep descriptions on one.
 inline std::string oneLine(std::string s)
 {

@@ -1,9 +1,12 @@
 #include "output/lit_mesh.h"
 
+#include "solver/prepare/covered_parts.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace regio::output {
 
@@ -79,6 +82,24 @@ model::Check checkLitMesh(const LitMesh& mesh)
         if (f < 0 || static_cast<size_t>(f) >= mesh.faceIds.size())
             return model::makeError("lit mesh: face index " + std::to_string(f) + " out of range");
     }
+    if (!mesh.faceObjects.empty() && mesh.faceObjects.size() != mesh.faceIds.size())
+        return model::makeError("lit mesh: faceObjects does not have one entry per face");
+    if (!mesh.faceMaterials.empty() && mesh.faceMaterials.size() != mesh.faceIds.size())
+        return model::makeError("lit mesh: faceMaterials does not have one entry per face");
+    for (int32_t m : mesh.faceMaterials) {
+        if (m < 0 || static_cast<size_t>(m) >= mesh.materials.size())
+            return model::makeError("lit mesh: material index " + std::to_string(m) + " out of range");
+    }
+    for (const CoveredPolygon& c : mesh.covered) {
+        if (c.face < 0 || static_cast<size_t>(c.face) >= mesh.faceIds.size())
+            return model::makeError("lit mesh: covered polygon of face index " + std::to_string(c.face) +
+                                    " out of range");
+        if (c.loop.size() < 3)
+            return model::makeError("lit mesh: a covered polygon has fewer than three corners");
+        for (const glm::vec3& p : c.loop)
+            if (!finite(p))
+                return model::makeError("lit mesh: a covered polygon has a corner that is not finite");
+    }
     for (size_t v = 0; v < n; ++v) {
         if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) || !finite(mesh.radiosity[v]) ||
             !finite(mesh.reflectance[v]))
@@ -119,6 +140,7 @@ LitMesh litMeshFromSolution(const PreparedScene& scene, const std::vector<Rgb>& 
                                           scene.vertices[static_cast<size_t>(el.vertices[2])]};
         b.add(corners, el.normal, elementRadiosity[e], p.reflectance, p.face);
     }
+    describeFaces(b.mesh, scene);
     return std::move(b.mesh);
 }
 
@@ -140,6 +162,62 @@ LitMesh litMeshFromSolution(const SolutionSnapshot& snapshot)
         b.add(corners, m.normals[e], snapshot.radiosity[e], m.reflectance[e], m.elementFace[e]);
     }
     return std::move(b.mesh);
+}
+
+void describeFaces(LitMesh& mesh, const PreparedScene& scene)
+{
+    mesh.faceObjects.clear();
+    mesh.faceMaterials.clear();
+    mesh.materials.clear();
+    mesh.covered.clear();
+    // Materials by id in order of first use; a face the solver could not use
+    // (no material) gets an anonymous one, so every face has an entry.
+    std::unordered_map<std::string, int32_t> materialIndex;
+    for (size_t f = 0; f < scene.faces.size(); ++f) {
+        const InputFace& face = scene.faces[f];
+        const Properties& p = scene.properties[f];
+        mesh.faceObjects.push_back(face.objectId);
+        auto [it, added] = materialIndex.try_emplace(face.materialId, static_cast<int32_t>(mesh.materials.size()));
+        if (added)
+            mesh.materials.push_back({face.materialId, toFloat(p.reflectance), toFloat(p.emission)});
+        mesh.faceMaterials.push_back(it->second);
+    }
+    const std::vector<std::vector<std::vector<Vec3>>> covered = solver::coveredPieces(scene);
+    for (size_t f = 0; f < covered.size(); ++f) {
+        for (const std::vector<Vec3>& loop : covered[f]) {
+            CoveredPolygon c;
+            c.face = static_cast<int32_t>(f);
+            c.normal = unitNormal(scene.properties[f].plane.normal);
+            for (const Vec3& v : loop)
+                c.loop.push_back(toFloat(v));
+            mesh.covered.push_back(std::move(c));
+        }
+    }
+}
+
+LitMesh withCoveredParts(const LitMesh& mesh)
+{
+    LitMesh out = mesh;
+    out.covered.clear();
+    for (const CoveredPolygon& c : mesh.covered) {
+        const glm::vec3 reflectance =
+            mesh.faceMaterials.empty()
+                ? glm::vec3(0.0f)
+                : mesh.materials[static_cast<size_t>(mesh.faceMaterials[static_cast<size_t>(c.face)])].reflectance;
+        const auto first = static_cast<uint32_t>(out.positions.size());
+        for (const glm::vec3& p : c.loop) {
+            out.positions.push_back(p);
+            out.normals.push_back(c.normal);
+            out.radiosity.push_back(glm::vec3(0.0f));
+            out.reflectance.push_back(reflectance);
+        }
+        // A fan: the loop is convex.
+        for (uint32_t k = 1; k + 1 < c.loop.size(); ++k) {
+            out.indices.insert(out.indices.end(), {first, first + k, first + k + 1});
+            out.triangleFace.push_back(c.face);
+        }
+    }
+    return out;
 }
 
 } // namespace regio::output

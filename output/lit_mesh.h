@@ -30,6 +30,22 @@ using model::Vec3;
 using solver::PreparedScene;
 using solver::SolutionSnapshot;
 
+// A material as the scene file has it, for exports that keep materials.
+struct LitMaterial {
+    std::string id;
+    glm::vec3 reflectance{0.0f}; // diffuse coefficient per channel
+    glm::vec3 emission{0.0f};    // W/m^2 per channel
+};
+
+// A part of an input face that a solid covers (a floor under a block): the
+// solver neither meshes nor lights it, the views do not draw it, and model
+// exports fill it in (black) so that the face comes out whole.
+struct CoveredPolygon {
+    int32_t face = -1;           // index into faceIds
+    std::vector<glm::vec3> loop; // convex, counter-clockwise seen from the front
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+};
+
 struct LitMesh {
     std::vector<glm::vec3> positions;   // metres
     std::vector<glm::vec3> normals;     // unit, the front side of the surface
@@ -38,6 +54,14 @@ struct LitMesh {
     std::vector<uint32_t> indices;      // three per triangle, counter-clockwise seen from the normal
     std::vector<int32_t> triangleFace;  // per triangle: index into faceIds
     std::vector<std::string> faceIds;   // the input faces of the scene file, scene order
+
+    // Where the mesh was made from a prepared scene (describeFaces): per
+    // input face its object's id and its material, and the covered parts.
+    // Empty otherwise; writers then write one anonymous material.
+    std::vector<std::string> faceObjects; // per face, parallel to faceIds
+    std::vector<int32_t> faceMaterials;   // per face: index into materials
+    std::vector<LitMaterial> materials;
+    std::vector<CoveredPolygon> covered;
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return indices.size() / 3; }
@@ -56,6 +80,15 @@ struct LitMesh {
 // in range, face indices in range, finite values). Writers refuse an
 // inconsistent mesh with this message instead of producing a broken file.
 model::Check checkLitMesh(const LitMesh& mesh);
+
+// Fills faceObjects, faceMaterials, materials and covered from the scene the
+// mesh was made from (its faceIds are the scene's faces, in order).
+void describeFaces(LitMesh& mesh, const PreparedScene& scene);
+
+// The mesh with its covered polygons appended as triangles (fresh vertices
+// at the end, radiosity 0, the face's reflectance and normal) and `covered`
+// emptied: what a model file holds.
+LitMesh withCoveredParts(const LitMesh& mesh);
 
 // Axis-aligned bounds of the positions (min > max when empty).
 struct LitBounds {

@@ -394,6 +394,7 @@ SmoothShading::SmoothShading(const PreparedScene& scene, const SmoothingOptions&
             planGroup(scene, groups.keys[g].plane.normal, groups.keys[g].reflectance, groups.elements[g]);
     }
     closeCracksBetweenGroups();
+    describeFaces(m_geometry, scene);
     m_exact = {};
     m_groupOf = {};
     m_openEdges = {};

@@ -160,8 +160,8 @@ private:
     std::vector<std::vector<CellPiece>> m_cells;
 };
 
-// The area of polygon and cover in common.
-double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal)
+// What polygon and cover have in common (inside every edge of the cover).
+Polygon commonPart(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal)
 {
     Polygon common = polygon;
     const size_t n = cover.size();
@@ -169,6 +169,12 @@ double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& cove
         const Vec3& a = cover[k];
         common = clipConvex(common, a, glm::normalize(glm::cross(coverNormal, cover[(k + 1) % n] - a)));
     }
+    return common;
+}
+
+double commonArea(const Polygon& polygon, const Polygon& cover, const Vec3& coverNormal)
+{
+    const Polygon common = commonPart(polygon, cover, coverNormal);
     return common.size() >= 3 ? model::polygonArea(common) : 0.0;
 }
 
@@ -188,13 +194,12 @@ PlaneKey keyOf(const Plane& plane, bool& flipped)
     return key;
 }
 
-} // namespace
-
-std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
-                                                            std::vector<Vec3>* shadowCorners)
+// For every face, the faces of solids that lie on it back to back (coplanar,
+// facing the other way) and whose bounds meet its own: the faces that may
+// cover part of it.
+std::vector<std::vector<size_t>> coversOfFaces(const PreparedScene& scene)
 {
     const size_t count = scene.faces.size();
-    std::vector<std::vector<Polygon>> pieces(count);
     // Faces by plane, each side apart: solids' faces are the covers.
     std::map<PlaneKey, std::array<std::vector<size_t>, 2>> byPlane;
     std::vector<PlaneKey> keys(count);
@@ -206,19 +211,36 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
         if (scene.faces[f].polygon.size() >= 3)
             byPlane[keys[f]][flipped ? 1 : 0].push_back(f);
     }
-    const std::vector<size_t> lights = lightFaces(scene);
+    std::vector<std::vector<size_t>> covers(count);
     for (size_t f = 0; f < count; ++f) {
         const Polygon& polygon = scene.faces[f].polygon;
         if (polygon.size() < 3)
             continue;
         const auto it = byPlane.find(keys[f]);
-        std::vector<size_t> covers;
-        if (it != byPlane.end()) {
-            const Box face = boxOf(polygon);
-            for (size_t g : it->second[flippedOf[f] ? 0 : 1])
-                if (scene.properties[g].solid && !apart(face, boxOf(scene.faces[g].polygon)))
-                    covers.push_back(g);
-        }
+        if (it == byPlane.end())
+            continue;
+        const Box face = boxOf(polygon);
+        for (size_t g : it->second[flippedOf[f] ? 0 : 1])
+            if (scene.properties[g].solid && !apart(face, boxOf(scene.faces[g].polygon)))
+                covers[f].push_back(g);
+    }
+    return covers;
+}
+
+} // namespace
+
+std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
+                                                            std::vector<Vec3>* shadowCorners)
+{
+    const size_t count = scene.faces.size();
+    std::vector<std::vector<Polygon>> pieces(count);
+    const std::vector<std::vector<size_t>> coversOf = coversOfFaces(scene);
+    const std::vector<size_t> lights = lightFaces(scene);
+    for (size_t f = 0; f < count; ++f) {
+        const Polygon& polygon = scene.faces[f].polygon;
+        if (polygon.size() < 3)
+            continue;
+        const std::vector<size_t>& covers = coversOf[f];
         if (covers.empty()) {
             pieces[f].push_back(polygon);
             continue;
@@ -265,6 +287,33 @@ std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene&
         }
     }
     return pieces;
+}
+
+std::vector<std::vector<std::vector<Vec3>>> coveredPieces(const PreparedScene& scene)
+{
+    const std::vector<std::vector<size_t>> coversOf = coversOfFaces(scene);
+    std::vector<std::vector<Polygon>> covered(scene.faces.size());
+    for (size_t f = 0; f < scene.faces.size(); ++f) {
+        // What one cover leaves goes on to the next, so that two solids
+        // standing on one spot do not cover it twice.
+        std::vector<Polygon> rest{scene.faces[f].polygon};
+        for (size_t g : coversOf[f]) {
+            const Polygon& cover = scene.faces[g].polygon;
+            const Vec3& coverNormal = scene.properties[g].plane.normal;
+            std::vector<Polygon> next;
+            for (Polygon& piece : rest) {
+                Polygon common = cleanConvexLoop(commonPart(piece, cover, coverNormal));
+                if (common.size() < 3 || model::polygonArea(common) <= kNegligibleArea) {
+                    next.push_back(std::move(piece));
+                    continue;
+                }
+                covered[f].push_back(std::move(common));
+                subtract(piece, cover, coverNormal, next);
+            }
+            rest = std::move(next);
+        }
+    }
+    return covered;
 }
 
 } // namespace regio::solver

@@ -26,4 +26,10 @@ namespace regio::solver {
 std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
                                                             std::vector<Vec3>* shadowCorners = nullptr);
 
+// The other side of it: for every input face, the convex pieces of its
+// polygon that solids cover (none where nothing stands on it), disjoint,
+// counter-clockwise around the face's normal. The solver never meshes them;
+// a model export fills them in, so that a floor under a block is whole.
+std::vector<std::vector<std::vector<Vec3>>> coveredPieces(const PreparedScene& scene);
+
 } // namespace regio::solver

@@ -55,6 +55,7 @@ model::Result<FaceSet> collectFaces(const model::Scene& scene)
 
                 InputFace info;
                 info.id = face.id;
+                info.objectId = object.id;
                 info.object = int(o);
                 info.part = int(p);
                 info.faceInPart = int(f);
@@ -69,6 +70,7 @@ model::Result<FaceSet> collectFaces(const model::Scene& scene)
                             (face.material.empty() ? part.material : face.material) + "')",
                         pointer + "/material", idPath));
                 } else {
+                    info.materialId = material->id;
                     props.reflectance = material->reflectance;
                     props.emission = material->emission;
                 }

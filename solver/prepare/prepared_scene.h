@@ -99,7 +99,9 @@ struct Properties {
 // the solver cannot use (zero area) are kept with area 0 and no elements, so
 // per-face results can still be reported for every id of the file.
 struct InputFace {
-    std::string id;  // the face id of the file
+    std::string id;       // the face id of the file
+    std::string objectId; // its object's id, and its material's (for exports that keep them)
+    std::string materialId;
     int object = -1; // indices into model::Scene::objects / parts / faces
     int part = -1;
     int faceInPart = -1;

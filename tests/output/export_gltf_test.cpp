@@ -5,12 +5,21 @@
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"
+#include "output/vertex_radiosity.h"
+#include "support/adaptive_scenes.h"
+#include "support/prepared_scenes.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
+#include <limits>
+#include <numeric>
+#include <set>
 
 using namespace regio::output;
 using namespace regio::solver;
@@ -39,11 +48,10 @@ DisplayColours colours(const LitMesh& mesh, double exposure = 0.0)
     return toneMappedColours(mesh, ToneMap::forMesh(s, mesh));
 }
 
-// The float vec3 accessor `name` of the first primitive, read from `bin`.
-std::vector<glm::vec3> readVec3(const json& doc, const std::string& bin, const std::string& name)
+// The float vec3 accessor `name` of a primitive, read from `bin`.
+std::vector<glm::vec3> readVec3(const json& doc, const std::string& bin, const json& primitive, const std::string& name)
 {
-    const size_t a = doc["meshes"][0]["primitives"][0]["attributes"][name].get<size_t>();
-    const json& accessor = doc["accessors"][a];
+    const json& accessor = doc["accessors"][primitive["attributes"][name].get<size_t>()];
     EXPECT_EQ(accessor["componentType"], 5126);
     EXPECT_EQ(accessor["type"], "VEC3");
     const json& view = doc["bufferViews"][accessor["bufferView"].get<size_t>()];
@@ -56,9 +64,9 @@ std::vector<glm::vec3> readVec3(const json& doc, const std::string& bin, const s
     return out;
 }
 
-std::vector<uint32_t> readIndices(const json& doc, const std::string& bin)
+std::vector<uint32_t> readIndices(const json& doc, const std::string& bin, const json& primitive)
 {
-    const json& accessor = doc["accessors"][doc["meshes"][0]["primitives"][0]["indices"].get<size_t>()];
+    const json& accessor = doc["accessors"][primitive["indices"].get<size_t>()];
     const json& view = doc["bufferViews"][accessor["bufferView"].get<size_t>()];
     const size_t offset = view["byteOffset"].get<size_t>();
     const int type = accessor["componentType"];
@@ -73,6 +81,34 @@ std::vector<uint32_t> readIndices(const json& doc, const std::string& bin)
     return out;
 }
 
+// The value of attribute `name` at every triangle corner of the file, in
+// file order (meshes, primitives, indices).
+std::vector<glm::vec3> readCorners(const json& doc, const std::string& bin, const std::string& name)
+{
+    std::vector<glm::vec3> out;
+    for (const json& m : doc["meshes"])
+        for (const json& primitive : m["primitives"]) {
+            const std::vector<glm::vec3> values = readVec3(doc, bin, primitive, name);
+            for (uint32_t i : readIndices(doc, bin, primitive))
+                out.push_back(values.at(i));
+        }
+    return out;
+}
+
+// The same from the mesh: triangles by input face (one object here).
+std::vector<glm::vec3> meshCorners(const LitMesh& mesh, const std::vector<glm::vec3>& values)
+{
+    std::vector<size_t> order(mesh.triangleCount());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return mesh.triangleFace[a] < mesh.triangleFace[b]; });
+    std::vector<glm::vec3> out;
+    for (size_t t : order)
+        for (size_t k = 0; k < 3; ++k)
+            out.push_back(values[mesh.indices[3 * t + k]]);
+    return out;
+}
+
 // Everything a reader relies on, for either container.
 void expectMatchesMesh(const json& doc, const std::string& bin, const LitMesh& mesh, const DisplayColours& c)
 {
@@ -84,22 +120,32 @@ void expectMatchesMesh(const json& doc, const std::string& bin, const LitMesh& m
         EXPECT_EQ(view["byteOffset"].get<size_t>() % 4, 0u) << "buffer views start 4-byte aligned";
         EXPECT_LE(view["byteOffset"].get<size_t>() + view["byteLength"].get<size_t>(), bin.size());
     }
-    const json& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
-    for (const char* name : {"POSITION", "NORMAL", "COLOR_0", "_RADIOSITY"})
-        EXPECT_EQ(doc["accessors"][attributes[name].get<size_t>()]["count"].get<size_t>(), mesh.vertexCount()) << name;
-    EXPECT_EQ(doc["meshes"][0]["primitives"][0]["mode"], 4);
-
-    const json& position = doc["accessors"][attributes["POSITION"].get<size_t>()];
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    size_t primitives = 0;
+    for (const json& m : doc["meshes"])
+        for (const json& primitive : m["primitives"]) {
+            ++primitives;
+            const json& attributes = primitive["attributes"];
+            const size_t count = doc["accessors"][attributes["POSITION"].get<size_t>()]["count"].get<size_t>();
+            for (const char* name : {"NORMAL", "COLOR_0", "_RADIOSITY"})
+                EXPECT_EQ(doc["accessors"][attributes[name].get<size_t>()]["count"].get<size_t>(), count) << name;
+            EXPECT_EQ(primitive["mode"], 4);
+            const json& position = doc["accessors"][attributes["POSITION"].get<size_t>()];
+            for (size_t k = 0; k < 3; ++k) {
+                lo[glm::length_t(k)] = std::min(lo[glm::length_t(k)], position["min"][k].get<float>());
+                hi[glm::length_t(k)] = std::max(hi[glm::length_t(k)], position["max"][k].get<float>());
+            }
+            EXPECT_TRUE(primitive["extras"].contains("face")) << "a primitive per input face, named";
+        }
+    std::set<int32_t> faces(mesh.triangleFace.begin(), mesh.triangleFace.end());
+    EXPECT_EQ(primitives, faces.size()) << "one primitive per input face";
     const LitBounds bounds = litMeshBounds(mesh);
-    for (glm::length_t k = 0; k < 3; ++k) {
-        EXPECT_EQ(position["min"][size_t(k)].get<float>(), bounds.min[k]);
-        EXPECT_EQ(position["max"][size_t(k)].get<float>(), bounds.max[k]);
-    }
-    EXPECT_EQ(readVec3(doc, bin, "POSITION"), mesh.positions);
-    EXPECT_EQ(readVec3(doc, bin, "NORMAL"), mesh.normals);
-    EXPECT_EQ(readVec3(doc, bin, "COLOR_0"), c.linear) << "linear, tone-mapped colours";
-    EXPECT_EQ(readVec3(doc, bin, "_RADIOSITY"), mesh.radiosity) << "the raw solution";
-    EXPECT_EQ(readIndices(doc, bin), mesh.indices);
+    EXPECT_EQ(lo, bounds.min);
+    EXPECT_EQ(hi, bounds.max);
+    EXPECT_EQ(readCorners(doc, bin, "POSITION"), meshCorners(mesh, mesh.positions));
+    EXPECT_EQ(readCorners(doc, bin, "NORMAL"), meshCorners(mesh, mesh.normals));
+    EXPECT_EQ(readCorners(doc, bin, "COLOR_0"), meshCorners(mesh, c.linear)) << "linear, tone-mapped colours";
+    EXPECT_EQ(readCorners(doc, bin, "_RADIOSITY"), meshCorners(mesh, mesh.radiosity)) << "the raw solution";
     EXPECT_EQ(doc["materials"][0]["extensions"].count("KHR_materials_unlit"), 1u);
     EXPECT_EQ(doc["extensionsUsed"][0], "KHR_materials_unlit");
 }
@@ -157,7 +203,7 @@ TEST(GltfExport, ExposureScalesTheVertexColours)
         const std::string bytes = readBytes(folder / name);
         const uint32_t jsonLength = u32(bytes, 12);
         const json doc = json::parse(bytes.substr(20, jsonLength));
-        return readVec3(doc, bytes.substr(28 + jsonLength), "COLOR_0");
+        return readCorners(doc, bytes.substr(28 + jsonLength), "COLOR_0");
     };
     const auto base = colour0("base.glb");
     const auto dark = colour0("dark.glb");
@@ -249,4 +295,46 @@ TEST(GltfExport, RewritingReplacesThePreviousFileWhole)
     for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder))
         ++files;
     EXPECT_EQ(files, 1u);
+}
+
+TEST(GltfExport, EveryObjectIsANodeAndEveryFaceAPrimitiveWithItsSceneMaterial)
+{
+    const auto folder = freshOutputFolder();
+    const PreparedScene scene = regio::test::prepared(regio::test::boxUnderLamp());
+    const LitMesh mesh = smoothLitMesh(scene, std::vector<regio::model::Rgb>(scene.elements.size(), {1.0, 1.0, 1.0}));
+    const DisplayColours c = colours(mesh);
+    const std::string path = (folder / "box.gltf").string();
+    ASSERT_TRUE(writeGltf(path, mesh, c, GltfContainer::Separate));
+    const json doc = json::parse(readBytes(path));
+    const std::string bin = readBytes(folder / "box.bin");
+
+    std::vector<std::string> nodes;
+    for (const json& node : doc["nodes"])
+        nodes.push_back(node["name"]);
+    EXPECT_EQ(nodes, (std::vector<std::string>{"floor", "box", "lamp"}));
+    ASSERT_EQ(doc["meshes"][1]["primitives"].size(), 6u) << "the box's six faces";
+    EXPECT_EQ(doc["meshes"][1]["primitives"][0]["extras"]["face"], mesh.faceIds[1]);
+
+    ASSERT_EQ(doc["materials"].size(), 2u);
+    const json& grey = doc["materials"][0];
+    EXPECT_EQ(grey["name"], "grey");
+    EXPECT_EQ(grey["extras"]["regio"]["reflectance"], json::array({0.5, 0.5, 0.5}));
+    EXPECT_EQ(grey["pbrMetallicRoughness"]["baseColorFactor"], json::array({1.0, 1.0, 1.0, 1.0}))
+        << "unlit: the vertex colours are the light";
+    const json& lamp = doc["materials"][1];
+    EXPECT_EQ(lamp["emissiveFactor"], json::array({1.0, 1.0, 1.0}));
+    EXPECT_EQ(lamp["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"], 40.0);
+    EXPECT_EQ(lamp["extras"]["regio"]["emission"], json::array({40.0, 40.0, 40.0}));
+    EXPECT_EQ(doc["extensionsUsed"], json::array({"KHR_materials_unlit", "KHR_materials_emissive_strength"}));
+
+    // The floor's primitive is whole: the part under the box is filled in.
+    const json& floor = doc["meshes"][0]["primitives"][0];
+    EXPECT_EQ(floor["material"], 0);
+    const std::vector<glm::vec3> p = readVec3(doc, bin, floor, "POSITION");
+    const std::vector<uint32_t> indices = readIndices(doc, bin, floor);
+    double area = 0.0;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3)
+        area +=
+            0.5 * double(glm::length(glm::cross(p[indices[t + 1]] - p[indices[t]], p[indices[t + 2]] - p[indices[t]])));
+    EXPECT_NEAR(area, 9.0, 1e-4);
 }

@@ -4,8 +4,13 @@
 
 #include "export_test_support.h"
 #include "lit_mesh_fixtures.h"
+#include "output/vertex_radiosity.h"
+#include "support/adaptive_scenes.h"
+#include "support/prepared_scenes.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include <array>
 #include <map>
@@ -26,6 +31,9 @@ struct ObjFile {
     std::vector<glm::vec3> normals;
     std::vector<std::array<int, 3>> faces; // 0-based position indices
     std::map<std::string, size_t> facesPerGroup;
+    std::map<std::string, double> areaPerGroup;
+    std::map<std::string, std::string> materialOfGroup; // the last "usemtl" in the group
+    std::string materialLibrary;                        // "mtllib"
 };
 
 ObjFile readObj(const std::string& text)
@@ -50,6 +58,10 @@ ObjFile readObj(const std::string& text)
             obj.normals.push_back(n);
         } else if (keyword == "g") {
             words >> group;
+        } else if (keyword == "usemtl") {
+            words >> obj.materialOfGroup[group];
+        } else if (keyword == "mtllib") {
+            words >> obj.materialLibrary;
         } else if (keyword == "f") {
             std::array<int, 3> f{};
             for (int& i : f) {
@@ -64,6 +76,9 @@ ObjFile readObj(const std::string& text)
             EXPECT_FALSE(words >> extra) << "triangles only";
             obj.faces.push_back(f);
             ++obj.facesPerGroup[group];
+            const glm::vec3 a = obj.positions.at(size_t(f[0])), b = obj.positions.at(size_t(f[1])),
+                            c = obj.positions.at(size_t(f[2]));
+            obj.areaPerGroup[group] += 0.5 * double(glm::length(glm::cross(b - a, c - a)));
         }
     }
     return obj;
@@ -128,4 +143,32 @@ TEST(ObjExport, AnUnwritablePathIsNamedInTheError)
     const auto error = writeObj(path, mesh, colours(mesh));
     ASSERT_FALSE(error.ok());
     EXPECT_NE(error.error().message.find(path), std::string::npos) << error.error().message;
+}
+
+TEST(ObjExport, TheScenesMaterialsGoToAnMtlFileAndEveryGroupNamesItsOwn)
+{
+    const auto folder = freshOutputFolder();
+    const PreparedScene scene = regio::test::prepared(regio::test::boxUnderLamp());
+    const LitMesh mesh = smoothLitMesh(scene, std::vector<regio::model::Rgb>(scene.elements.size(), {1.0, 1.0, 1.0}));
+    const auto path = folder / "box.obj";
+    ASSERT_TRUE(writeObj(path.string(), mesh, colours(mesh)));
+    EXPECT_EQ(mtlPath(path.string()), (folder / "box.mtl").string());
+    const ObjFile obj = readObj(readBytes(path));
+    EXPECT_EQ(obj.materialLibrary, "box.mtl");
+    const std::string mtl = readBytes(folder / "box.mtl");
+    EXPECT_NE(mtl.find("newmtl grey\nKd 0.5 0.5 0.5\n"), std::string::npos) << mtl;
+    EXPECT_NE(mtl.find("newmtl lamp\nKd 0 0 0\nKs 0 0 0\nKe 40 40 40\n"), std::string::npos) << mtl;
+    EXPECT_EQ(obj.materialOfGroup.at("floor.face"), "grey");
+    EXPECT_EQ(obj.materialOfGroup.at("lamp.face"), "lamp");
+    EXPECT_EQ(obj.materialOfGroup.size(), mesh.faceIds.size()) << "every group names its material";
+    EXPECT_NEAR(obj.areaPerGroup.at("floor.face"), 9.0, 1e-4) << "the floor under the box is filled in";
+}
+
+TEST(ObjExport, AMeshThatDoesNotKnowItsMaterialsWritesNoMtlFile)
+{
+    const auto folder = freshOutputFolder();
+    const LitMesh mesh = sampleRoom();
+    ASSERT_TRUE(writeObj((folder / "room.obj").string(), mesh, colours(mesh)));
+    EXPECT_FALSE(std::filesystem::exists(folder / "room.mtl"));
+    EXPECT_TRUE(readObj(readBytes(folder / "room.obj")).materialLibrary.empty());
 }

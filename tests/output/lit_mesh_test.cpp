@@ -3,12 +3,16 @@
 #include "output/lit_mesh.h"
 
 #include "lit_mesh_fixtures.h"
+#include "output/vertex_radiosity.h"
 #include "solver/solver.h"
+#include "support/adaptive_scenes.h"
+#include "support/prepared_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 using namespace regio;
@@ -176,4 +180,50 @@ TEST(LitMesh, BoundsEncloseEveryVertex)
     EXPECT_EQ(b.min, glm::vec3(0.0f));
     EXPECT_EQ(b.max, glm::vec3(1.0f));
     EXPECT_TRUE(litMeshBounds(LitMesh{}).empty);
+}
+
+TEST(LitMesh, AMeshOfAPreparedSceneKnowsEachFacesObjectAndMaterialAndWhatSolidsCover)
+{
+    const PreparedScene scene = test::prepared(test::boxUnderLamp());
+    const std::vector<Rgb> radiosity(scene.elements.size(), Rgb(1.0));
+    for (const LitMesh& mesh : {litMeshFromSolution(scene, radiosity), smoothLitMesh(scene, radiosity)}) {
+        ASSERT_TRUE(checkLitMesh(mesh));
+        ASSERT_EQ(mesh.faceObjects.size(), mesh.faceIds.size());
+        ASSERT_EQ(mesh.faceMaterials.size(), mesh.faceIds.size());
+        const auto floor =
+            size_t(std::find(mesh.faceIds.begin(), mesh.faceIds.end(), "floor.face") - mesh.faceIds.begin());
+        const auto lamp =
+            size_t(std::find(mesh.faceIds.begin(), mesh.faceIds.end(), "lamp.face") - mesh.faceIds.begin());
+        ASSERT_LT(floor, mesh.faceIds.size());
+        ASSERT_LT(lamp, mesh.faceIds.size());
+        EXPECT_EQ(mesh.faceObjects[floor], "floor");
+        const LitMaterial& grey = mesh.materials[size_t(mesh.faceMaterials[floor])];
+        EXPECT_EQ(grey.id, "grey");
+        EXPECT_EQ(grey.reflectance, glm::vec3(0.5f));
+        EXPECT_EQ(mesh.materials[size_t(mesh.faceMaterials[lamp])].emission, glm::vec3(40.0f));
+        EXPECT_EQ(mesh.materials.size(), 2u) << "one entry per material, however many faces use it";
+
+        // The box stands on the floor: its 0.6 m square is the one covered part.
+        ASSERT_EQ(mesh.covered.size(), 1u);
+        EXPECT_EQ(size_t(mesh.covered[0].face), floor);
+        EXPECT_EQ(mesh.covered[0].normal, glm::vec3(0.0f, 1.0f, 0.0f));
+        auto area = [](const LitMesh& m, size_t face) {
+            double sum = 0.0;
+            for (size_t t = 0; t < m.triangleCount(); ++t)
+                if (size_t(m.triangleFace[t]) == face)
+                    sum += 0.5 * double(glm::length(
+                                     glm::cross(m.positions[m.indices[3 * t + 1]] - m.positions[m.indices[3 * t]],
+                                                m.positions[m.indices[3 * t + 2]] - m.positions[m.indices[3 * t]])));
+            return sum;
+        };
+        EXPECT_NEAR(area(mesh, floor), 9.0 - 0.36, 1e-5) << "the lit floor leaves out what the box covers";
+        const LitMesh whole = withCoveredParts(mesh);
+        ASSERT_TRUE(checkLitMesh(whole));
+        EXPECT_TRUE(whole.covered.empty());
+        EXPECT_NEAR(area(whole, floor), 9.0, 1e-5) << "a model file's floor is whole";
+        for (size_t v = mesh.vertexCount(); v < whole.vertexCount(); ++v) {
+            EXPECT_EQ(whole.radiosity[v], glm::vec3(0.0f)) << "no light reaches under the box";
+            EXPECT_EQ(whole.reflectance[v], glm::vec3(0.5f));
+        }
+    }
 }
