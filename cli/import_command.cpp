@@ -144,10 +144,11 @@ int runImport(int argc, char** argv)
     if (!quiet) {
         const importer::ImportReport& r = imported->report;
         std::cout << files[0] << ": " << r.merge.trianglesIn << " triangles -> " << r.merge.faces << " faces, "
-                  << r.build.parts << " parts (" << r.build.closedParts << " closed), " << r.build.objects
-                  << " objects, " << r.build.materials << " materials, " << r.build.emittingFaces << " emitting faces, "
-                  << r.build.turnedFaces << " faces turned; dropped " << r.merge.degenerate << " of no area, "
-                  << r.merge.duplicate << " repeated, " << r.read.pointsAndLines << " points or lines";
+                  << r.build.parts << " parts (" << r.build.closedParts << " closed, " << r.build.closedFacingIn
+                  << " of them facing in), " << r.build.objects << " objects, " << r.build.materials << " materials, "
+                  << r.build.emittingFaces << " emitting faces, " << r.build.turnedFaces << " faces turned; dropped "
+                  << r.merge.degenerate << " of no area, " << r.merge.duplicate << " repeated, "
+                  << r.read.pointsAndLines << " points or lines";
         if (options.autoRegions)
             std::cout << "; " << r.regions << (r.regions == 1 ? " region, " : " regions, ") << r.fragments
                       << " BSP fragments (one tree: " << r.singleTreeFragments << ")";

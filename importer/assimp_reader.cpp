@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -111,13 +112,46 @@ std::optional<std::string> implausibleOffHeader(const std::string& path)
            std::to_string(static_cast<long long>(size)) + " bytes";
 }
 
-// KHR_materials_emissive_strength by material name: the glTF reader of
-// Debian's Assimp (5.2) does not know the extension, and without it an
-// emitter of strength 5 would come in five times too dim. Read from the
-// file's JSON (a .gltf, or the first chunk of a .glb).
-std::map<std::string, double> gltfEmissiveStrengths(const std::string& path)
+// What a glTF material says that Debian's Assimp (5.2) does not pass on,
+// by material name, read from the file's JSON (a .gltf, or the first chunk
+// of a .glb):
+//   - KHR_materials_emissive_strength: without it an emitter of strength 5
+//     would come in five times too dim;
+//   - the scene's reflectance and emission that Regio's own glTF export
+//     keeps in the material's extras ("regio"), where the glTF colours are
+//     those of an unlit display material.
+struct GltfMaterialExtras {
+    std::optional<double> emissiveStrength;
+    std::optional<Rgb> reflectance;
+    std::optional<Rgb> emission;
+};
+
+std::optional<Rgb> rgbFromJson(const nlohmann::json* value)
 {
-    std::map<std::string, double> out;
+    if (value == nullptr || !value->is_array() || value->size() != 3)
+        return std::nullopt;
+    Rgb out{0.0};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const nlohmann::json& c = (*value)[k];
+        if (!c.is_number() || !std::isfinite(c.get<double>()) || c.get<double>() < 0.0)
+            return std::nullopt;
+        out[glm::length_t(k)] = c.get<double>();
+    }
+    return out;
+}
+
+// The member `key` of an object, or null (a file may put anything anywhere).
+const nlohmann::json* member(const nlohmann::json* object, const char* key)
+{
+    if (object == nullptr || !object->is_object())
+        return nullptr;
+    const auto it = object->find(key);
+    return it == object->end() ? nullptr : &*it;
+}
+
+std::map<std::string, GltfMaterialExtras> gltfMaterialExtras(const std::string& path)
+{
+    std::map<std::string, GltfMaterialExtras> out;
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext != ".gltf" && ext != ".glb")
         return out;
@@ -139,14 +173,55 @@ std::map<std::string, double> gltfEmissiveStrengths(const std::string& path)
     if (!gltf.is_object() || !gltf.contains("materials") || !gltf["materials"].is_array())
         return out;
     for (const nlohmann::json& m : gltf["materials"]) {
-        if (!m.is_object() || !m.contains("extensions") || !m["extensions"].is_object())
+        if (!m.is_object())
             continue;
-        const nlohmann::json& ext_ = m["extensions"];
-        if (!ext_.contains("KHR_materials_emissive_strength"))
+        const std::string name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : "";
+        GltfMaterialExtras extras;
+        const nlohmann::json* strength =
+            member(member(member(&m, "extensions"), "KHR_materials_emissive_strength"), "emissiveStrength");
+        if (strength && strength->is_number() && std::isfinite(strength->get<double>()) &&
+            strength->get<double>() >= 0.0)
+            extras.emissiveStrength = strength->get<double>();
+        const nlohmann::json* regio = member(member(&m, "extras"), "regio");
+        extras.reflectance = rgbFromJson(member(regio, "reflectance"));
+        extras.emission = rgbFromJson(member(regio, "emission"));
+        out[name] = extras;
+    }
+    return out;
+}
+
+// The objects ("o") of an OBJ file, by the groups ("g") under them.
+// Assimp's OBJ reader makes every group an object of its own and forgets
+// the "o" lines, so a solid written as one group per face (as Regio's OBJ
+// export writes it, to keep its faces apart) would come in as six objects
+// and no solid. A line scan, no geometry: group name -> object name, and
+// each object name to itself (faces before any group).
+std::map<std::string, std::string> objGroupObjects(const std::string& path)
+{
+    std::map<std::string, std::string> out;
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".obj")
+        return out;
+    std::ifstream in(path, std::ios::binary);
+    std::string line, object;
+    const auto rest = [](const std::string& l) {
+        const std::size_t begin = l.find_first_not_of(" \t", 1);
+        if (begin == std::string::npos)
+            return std::string();
+        const std::size_t end = l.find_last_not_of(" \t\r");
+        return l.substr(begin, end + 1 - begin);
+    };
+    while (std::getline(in, line)) {
+        if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t'))
             continue;
-        const nlohmann::json& strength = ext_["KHR_materials_emissive_strength"];
-        if (strength.is_object() && strength.contains("emissiveStrength") && strength["emissiveStrength"].is_number())
-            out[m.value("name", std::string())] = strength["emissiveStrength"].get<double>();
+        if (line[0] == 'o') {
+            object = rest(line);
+            out.emplace(object, object);
+        } else if (line[0] == 'g' && !object.empty()) {
+            out.emplace(rest(line), object);
+        }
     }
     return out;
 }
@@ -176,10 +251,17 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
                                                           : SoupMaterial{});
     if (out.soup.materials.empty())
         out.soup.materials.push_back({});
-    for (const auto& [name, strength] : gltfEmissiveStrengths(path))
-        for (SoupMaterial& m : out.soup.materials)
-            if (m.name == name && strength >= 0.0)
-                m.emission *= strength;
+    for (const auto& [name, extras] : gltfMaterialExtras(path))
+        for (SoupMaterial& m : out.soup.materials) {
+            if (m.name != name)
+                continue;
+            if (extras.emissiveStrength)
+                m.emission *= *extras.emissiveStrength;
+            if (extras.reflectance)
+                m.diffuse = *extras.reflectance;
+            if (extras.emission)
+                m.emission = *extras.emission;
+        }
 
     const auto frame = [&](const aiVector3D& p) {
         const Vec3 v = Vec3{double(p.x), double(p.y), double(p.z)} * options.scale;
@@ -192,6 +274,7 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
         aiMatrix4x4 transform;
     };
     std::vector<Visit> todo{{scene->mRootNode, scene->mRootNode ? scene->mRootNode->mTransformation : aiMatrix4x4()}};
+    int objects = 0; // nodes with meshes so far
     while (!todo.empty()) {
         const Visit visit = todo.back();
         todo.pop_back();
@@ -201,6 +284,7 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
         for (unsigned c = visit.node->mChildren ? visit.node->mNumChildren : 0; c-- > 0;)
             if (const aiNode* child = visit.node->mChildren[c])
                 todo.push_back({child, visit.transform * child->mTransformation});
+        bool anyMesh = false;
         for (unsigned k = 0; visit.node->mMeshes && k < visit.node->mNumMeshes; ++k) {
             if (visit.node->mMeshes[k] >= scene->mNumMeshes || scene->mMeshes[visit.node->mMeshes[k]] == nullptr ||
                 scene->mMeshes[visit.node->mMeshes[k]]->mVertices == nullptr)
@@ -208,7 +292,9 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
             const aiMesh& mesh = *scene->mMeshes[visit.node->mMeshes[k]];
             const std::string nodeName = visit.node->mName.C_Str();
             const int meshIndex = int(out.soup.meshes.size());
-            out.soup.meshes.push_back({nodeName.empty() || nodeName == "RootNode" ? mesh.mName.C_Str() : nodeName});
+            out.soup.meshes.push_back(
+                {nodeName.empty() || nodeName == "RootNode" ? mesh.mName.C_Str() : nodeName, objects});
+            anyMesh = true;
             ++out.counts.meshes;
             const auto base = int(out.soup.positions.size());
             for (unsigned v = 0; v < mesh.mNumVertices; ++v)
@@ -232,6 +318,19 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
                 t.mesh = meshIndex;
                 out.soup.triangles.push_back(t);
             }
+        }
+        if (anyMesh)
+            ++objects;
+    }
+    // An OBJ file's groups back under their "o" objects.
+    if (const auto groups = objGroupObjects(path); !groups.empty()) {
+        std::map<std::string, int> objectOf;
+        for (SoupMesh& mesh : out.soup.meshes) {
+            const auto it = groups.find(mesh.name);
+            const std::string key = it != groups.end() ? "o " + it->second : "n " + std::to_string(mesh.object);
+            mesh.object = objectOf.emplace(key, int(objectOf.size())).first->second;
+            if (it != groups.end())
+                mesh.name = it->second;
         }
     }
     if (out.soup.triangles.empty())

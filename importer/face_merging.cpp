@@ -14,6 +14,7 @@
 #include <numbers>
 #include <queue>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -190,6 +191,127 @@ std::vector<std::vector<int>> byOutline(const std::vector<Vec3>& positions, cons
     return out;
 }
 
+// Step 2b: T-junctions. Where a corner of one triangle lies inside an edge
+// of another of the same mesh (a finer neighbour, a hole filled with long
+// edges), the two share no edge and would not join one surface. Such a
+// corner is an end of an edge that only one triangle of its mesh uses, and
+// so is the edge it lies on: only those are searched (none in a closed,
+// conforming mesh). A triangle with corners on its edges becomes a fan
+// around its centroid, which the outline drops again (step 4).
+struct TTriangle {
+    std::array<int, 3> v;
+    int material, mesh;
+    Vec3 normal;
+    double area;
+};
+
+constexpr double kMaxCellsAlongAnEdge = 4096.0;
+
+std::size_t splitTJunctions(std::vector<TTriangle>& triangles, std::vector<Vec3>& positions, double distance)
+{
+    std::map<std::array<int, 3>, int> uses; // (mesh, low, high) -> triangles
+    for (const TTriangle& t : triangles)
+        for (std::size_t k = 0; k < 3; ++k)
+            ++uses[{t.mesh, std::min(t.v[k], t.v[(k + 1) % 3]), std::max(t.v[k], t.v[(k + 1) % 3])}];
+    // The ends of open edges, by mesh, in a hash grid as wide as the
+    // median open edge is long.
+    std::vector<std::pair<int, int>> ends; // (mesh, vertex)
+    std::vector<double> lengths;
+    for (const auto& [key, count] : uses)
+        if (count == 1) {
+            ends.push_back({key[0], key[1]});
+            ends.push_back({key[0], key[2]});
+            lengths.push_back(glm::length(positions[std::size_t(key[2])] - positions[std::size_t(key[1])]));
+        }
+    if (lengths.empty())
+        return 0;
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
+    const double cell = std::max(lengths[lengths.size() / 2], 4.0 * distance);
+    const auto cellOf = [&](const Vec3& p) {
+        return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)),
+                                           std::int64_t(std::floor(p.z / cell))};
+    };
+    std::map<std::array<std::int64_t, 3>, std::vector<std::pair<int, int>>> grid;
+    for (const auto& e : ends)
+        grid[cellOf(positions[std::size_t(e.second)])].push_back(e);
+
+    std::size_t split = 0;
+    std::vector<TTriangle> out;
+    out.reserve(triangles.size());
+    for (const TTriangle& t : triangles) {
+        // Per edge, the corners inside it, by their distance from its start.
+        std::array<std::vector<std::pair<double, int>>, 3> inside;
+        bool any = false;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const int a = t.v[k], b = t.v[(k + 1) % 3];
+            if (uses[{t.mesh, std::min(a, b), std::max(a, b)}] != 1)
+                continue;
+            const Vec3 pa = positions[std::size_t(a)], pb = positions[std::size_t(b)];
+            const double length = glm::length(pb - pa);
+            const Vec3 along = (pb - pa) / length;
+            // The cells along the edge and those next to them. An edge
+            // thousands of cells long (a ground plane under a finely cut
+            // model) is not searched: its neighbours are not that.
+            const double steps = std::ceil(length / cell);
+            if (!(steps <= kMaxCellsAlongAnEdge))
+                continue;
+            std::set<std::array<std::int64_t, 3>> visited;
+            for (int step = 0; step <= int(steps); ++step) {
+                const auto c = cellOf(pa + along * std::min(step * cell, length));
+                for (std::int64_t dx = -1; dx <= 1; ++dx)
+                    for (std::int64_t dy = -1; dy <= 1; ++dy)
+                        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                            const std::array<std::int64_t, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
+                            if (!visited.insert(n).second)
+                                continue;
+                            const auto it = grid.find(n);
+                            if (it == grid.end())
+                                continue;
+                            for (const auto& [mesh, w] : it->second) {
+                                if (mesh != t.mesh || w == a || w == b)
+                                    continue;
+                                const Vec3 p = positions[std::size_t(w)];
+                                const double u = glm::dot(p - pa, along);
+                                if (u <= distance || u >= length - distance ||
+                                    glm::length(p - (pa + along * u)) > distance)
+                                    continue;
+                                inside[k].push_back({u, w});
+                            }
+                        }
+            }
+            std::sort(inside[k].begin(), inside[k].end());
+            any = any || !inside[k].empty();
+        }
+        if (!any) {
+            out.push_back(t);
+            continue;
+        }
+        ++split;
+        const int centre = int(positions.size());
+        positions.push_back(
+            (positions[std::size_t(t.v[0])] + positions[std::size_t(t.v[1])] + positions[std::size_t(t.v[2])]) / 3.0);
+        for (std::size_t k = 0; k < 3; ++k) {
+            std::vector<int> chain{t.v[k]};
+            for (const auto& [u, w] : inside[k])
+                chain.push_back(w);
+            chain.push_back(t.v[(k + 1) % 3]);
+            for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+                const Vec3 &p0 = positions[std::size_t(centre)], &p1 = positions[std::size_t(chain[i])],
+                           &p2 = positions[std::size_t(chain[i + 1])];
+                out.push_back({{centre, chain[i], chain[i + 1]},
+                               t.material,
+                               t.mesh,
+                               t.normal,
+                               glm::length(glm::cross(p1 - p0, p2 - p0)) / 2.0});
+            }
+        }
+    }
+    triangles = std::move(out);
+    return split;
+}
+
 } // namespace
 
 MergedModel mergeTriangles(const TriangleSoup& soup, const MergeOptions& options)
@@ -200,14 +322,9 @@ MergedModel mergeTriangles(const TriangleSoup& soup, const MergeOptions& options
     out.counts.weldedVertices = soup.positions.size() - out.positions.size();
 
     // Step 2: triangles with area, each once.
-    struct Triangle {
-        std::array<int, 3> v;
-        int material, mesh;
-        Vec3 normal;
-        double area;
-    };
+    using Triangle = TTriangle;
     std::vector<Triangle> triangles;
-    std::set<std::array<int, 3>> seen;
+    std::set<std::array<int, 4>> seen;
     for (const SoupTriangle& t : soup.triangles) {
         std::array<int, 3> v{};
         for (std::size_t k = 0; k < 3; ++k)
@@ -222,14 +339,19 @@ MergedModel mergeTriangles(const TriangleSoup& soup, const MergeOptions& options
             ++out.counts.degenerate;
             continue;
         }
-        std::array<int, 3> sorted = v;
-        std::sort(sorted.begin(), sorted.end());
-        if (!seen.insert(sorted).second) {
+        // The same triangle twice in one mesh, wound the same way. Wound the
+        // other way it is the back of a thin sheet (a solid's face on
+        // another's, a leaf seen from both sides), which stays.
+        const auto first = std::size_t(std::min_element(v.begin(), v.end()) - v.begin());
+        const std::array<int, 4> key{t.mesh, v[first], v[(first + 1) % 3], v[(first + 2) % 3]};
+        if (!seen.insert(key).second) {
             ++out.counts.duplicate;
             continue;
         }
         triangles.push_back({v, t.material, t.mesh, cross / twice, twice / 2.0});
     }
+
+    out.counts.tJunctions = splitTJunctions(triangles, out.positions, options.distance);
 
     // Step 3: flat surfaces by flood fill over shared edges.
     std::map<Edge, std::vector<int>> byEdge; // undirected (low, high) -> triangles
@@ -317,25 +439,46 @@ MergedModel mergeTriangles(const TriangleSoup& soup, const MergeOptions& options
                 out.faces.push_back({std::move(loop), first.material, first.mesh});
     }
 
-    // Step 5: corners on a straight edge that only their own face uses.
-    std::vector<int> uses(out.positions.size(), 0);
+    // Step 5: corners on a straight edge, in every face that has them: a
+    // point that only divides an edge (its own face's, or one two faces
+    // share) goes from every face at once, so shared edges stay shared. A
+    // corner of any face (a T-junction's) stays in all of them.
+    const auto straightAt = [&](const MergedFace& f, std::size_t i) {
+        const std::size_t n = f.loop.size();
+        const Vec3& a = out.positions[std::size_t(f.loop[(i + n - 1) % n])];
+        const Vec3& b = out.positions[std::size_t(f.loop[i])];
+        const Vec3& c = out.positions[std::size_t(f.loop[(i + 1) % n])];
+        const Vec3 ac = c - a;
+        const double length = glm::length(ac);
+        return length > 0.0 && glm::length(glm::cross(b - a, ac)) / length <= kOnLine && glm::dot(b - a, ac) > 0.0 &&
+               glm::dot(c - b, ac) > 0.0;
+    };
+    std::vector<int> uses(out.positions.size(), 0), straightUses(out.positions.size(), 0);
     for (const MergedFace& f : out.faces)
-        for (const int v : f.loop)
-            ++uses[std::size_t(v)];
-    for (MergedFace& f : out.faces) {
-        for (std::size_t i = 0; f.loop.size() > 3 && i < f.loop.size();) {
-            const std::size_t n = f.loop.size();
-            const Vec3& a = out.positions[std::size_t(f.loop[(i + n - 1) % n])];
-            const Vec3& b = out.positions[std::size_t(f.loop[i])];
-            const Vec3& c = out.positions[std::size_t(f.loop[(i + 1) % n])];
-            const Vec3 u = b - a, v = c - b;
-            const bool straight =
-                glm::length(glm::cross(u, v)) <= 1e-9 * glm::length(u) * glm::length(v) && glm::dot(u, v) > 0.0;
-            if (straight && uses[std::size_t(f.loop[i])] == 1)
-                f.loop.erase(f.loop.begin() + std::ptrdiff_t(i));
-            else
-                ++i;
+        for (std::size_t i = 0; i < f.loop.size(); ++i) {
+            ++uses[std::size_t(f.loop[i])];
+            if (straightAt(f, i))
+                ++straightUses[std::size_t(f.loop[i])];
         }
+    for (MergedFace& f : out.faces) {
+        std::vector<int> kept;
+        for (std::size_t i = 0; i < f.loop.size(); ++i) {
+            const auto v = std::size_t(f.loop[i]);
+            if (uses[v] != straightUses[v] || f.loop.size() - (i - kept.size()) <= 3)
+                kept.push_back(f.loop[i]);
+        }
+        // Dropping a corner can tip a face that was barely convex about its
+        // own normal over the validation's edge; it then keeps its corners.
+        if (kept.size() != f.loop.size() && acceptable(out.positions, kept))
+            f.loop = std::move(kept);
+        // Every loop starts at its least corner (by x, then y, then z): the
+        // solver strips a face from its first corner (paper §5.4), and where
+        // a file gives no start, the geometry alone should choose it.
+        const auto least = std::min_element(f.loop.begin(), f.loop.end(), [&](int a, int b) {
+            const Vec3 &p = out.positions[std::size_t(a)], &q = out.positions[std::size_t(b)];
+            return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+        });
+        std::rotate(f.loop.begin(), least, f.loop.end());
     }
     out.counts.faces = out.faces.size();
     return out;

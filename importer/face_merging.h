@@ -6,7 +6,10 @@
 //
 //   1. Corners closer than `distance` are welded into one vertex.
 //   2. Triangles of no area (two corners welded, or collinear ones) and
-//      repeated triangles (the same three vertices) are dropped.
+//      repeated triangles (the same three vertices, wound the same way, in
+//      one mesh) are dropped.
+//      A triangle with another's corner inside one of its edges (a
+//      T-junction) is split there, so that the two share an edge.
 //   3. Edge-adjacent triangles of one mesh and one material whose normals
 //      differ by at most `angleDegrees` and whose corners lie within
 //      `distance` of the first one's plane form a group: one flat surface.
@@ -18,7 +21,8 @@
 //      across shared edges, longest first, while the union stays convex.
 //      Either gives at most four times the fewest convex pieces, with the
 //      model's own vertices.
-//   5. Corners on a straight edge that no other face uses are dropped.
+//   5. Corners on a straight edge are dropped from every face that has them,
+//      unless one face has a true corner there.
 //
 // Pure geometry: nothing of the file format, the scene or the solver.
 #include "importer/triangle_soup.h"
@@ -42,7 +46,8 @@ struct MergedFace {
 struct MergeCounts {
     std::size_t trianglesIn = 0;
     std::size_t degenerate = 0;     // dropped: no area after welding
-    std::size_t duplicate = 0;      // dropped: the same three vertices as another triangle
+    std::size_t duplicate = 0;      // dropped: the same three vertices as another triangle of its mesh, same winding
+    std::size_t tJunctions = 0;     // triangles split where a neighbour's corner lies inside an edge
     std::size_t weldedVertices = 0; // corners that became another corner
     std::size_t surfaces = 0;       // groups of step 3
     std::size_t faces = 0;          // faces out

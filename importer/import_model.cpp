@@ -115,11 +115,13 @@ std::string reportJson(const ImportReport& r)
     j["dropped"] = {
         {"points_and_lines", r.read.pointsAndLines}, {"no_area", r.merge.degenerate}, {"repeated", r.merge.duplicate}};
     j["welded_vertices"] = r.merge.weldedVertices;
+    j["t_junctions_split"] = r.merge.tJunctions;
     j["flat_surfaces"] = r.merge.surfaces;
     j["faces_out"] = r.merge.faces;
     j["objects"] = r.build.objects;
     j["parts"] = {{"total", r.build.parts},
-                  {"closed_solids", r.build.closedParts},
+                  {"closed", r.build.closedParts},
+                  {"closed_facing_in", r.build.closedFacingIn},
                   {"open_shells", r.build.parts - r.build.closedParts}};
     j["materials"] = r.build.materials;
     j["reflectance_scaled_down"] = r.build.clampedMaterials;

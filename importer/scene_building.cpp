@@ -56,10 +56,25 @@ bool closed(const model::Part& part)
     });
 }
 
+// The volume a closed part encloses (divergence theorem): negative when its
+// faces look in.
+double signedVolume(const model::Part& part)
+{
+    double six = 0.0;
+    for (const model::Face& face : part.faces)
+        for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
+            six += glm::dot(
+                part.vertices[std::size_t(face.loop[0])],
+                glm::cross(part.vertices[std::size_t(face.loop[i])], part.vertices[std::size_t(face.loop[i + 1])]));
+    return six / 6.0;
+}
+
 // Faces of one surface wound alike: across an edge two faces share, the edge
 // must run opposite ways. Within each edge-connected patch of faces, the
-// orientation most of its area has in the file wins; a closed part is then
-// turned so its normals point out (positive volume). Returns the faces turned.
+// orientation most of its area has in the file wins. Nothing else turns a
+// face: a closed part wound consistently inwards is a room seen from inside
+// (the commonest radiosity scene), not a solid inside out. Returns the faces
+// turned.
 std::size_t orientConsistently(model::Part& part)
 {
     const std::size_t n = part.faces.size();
@@ -104,20 +119,6 @@ std::size_t orientConsistently(model::Part& part)
     for (std::size_t f = 0; f < n; ++f)
         if (flip[f])
             std::reverse(part.faces[f].loop.begin(), part.faces[f].loop.end());
-    if (closed(part)) {
-        double volume = 0.0; // six times the signed volume, by the divergence theorem
-        for (const model::Face& face : part.faces)
-            for (std::size_t i = 1; i + 1 < face.loop.size(); ++i)
-                volume += glm::dot(
-                    part.vertices[std::size_t(face.loop[0])],
-                    glm::cross(part.vertices[std::size_t(face.loop[i])], part.vertices[std::size_t(face.loop[i + 1])]));
-        if (volume < 0.0) {
-            for (std::size_t f = 0; f < n; ++f) {
-                std::reverse(part.faces[f].loop.begin(), part.faces[f].loop.end());
-                flip[f] ^= 1;
-            }
-        }
-    }
     return std::size_t(std::count(flip.begin(), flip.end(), 1));
 }
 
@@ -190,20 +191,37 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
     }
     out.counts.materials = out.scene.materials.size();
 
-    // Faces by mesh, then by connected piece (faces sharing a vertex).
-    std::map<int, std::vector<std::size_t>> byMesh;
-    for (std::size_t f = 0; f < merged.faces.size(); ++f)
-        byMesh[merged.faces[f].mesh].push_back(f);
-    for (const auto& [mesh, faces] : byMesh) {
+    // Faces by object (a node of the file, whatever meshes it has), then by
+    // connected piece (below). A mesh of no known node is
+    // an object of its own, after the nodes.
+    std::map<int, std::vector<std::size_t>> byObject;
+    std::map<int, int> meshOfObject; // the first mesh of each, for its name
+    for (std::size_t f = 0; f < merged.faces.size(); ++f) {
+        const int mesh = merged.faces[f].mesh;
+        const int node = soup.meshes[std::size_t(mesh)].object;
+        const int object = node >= 0 ? node : int(soup.meshes.size()) + mesh;
+        byObject[object].push_back(f);
+        meshOfObject.emplace(object, mesh);
+    }
+    for (const auto& [objectKey, faces] : byObject) {
+        const int mesh = meshOfObject.at(objectKey);
+        // Connected through edges that exactly two faces share: where more
+        // meet (a board standing flush against a shelf's side, two boxes
+        // touching along an edge), the solids stay apart, and so do faces
+        // that only touch at a corner.
         std::vector<int> parent(faces.size());
         std::iota(parent.begin(), parent.end(), 0);
-        std::map<int, int> firstFaceOfVertex;
-        for (std::size_t k = 0; k < faces.size(); ++k)
-            for (const int v : merged.faces[faces[k]].loop) {
-                const auto [it, fresh] = firstFaceOfVertex.emplace(v, int(k));
-                if (!fresh)
-                    parent[std::size_t(findRoot(parent, int(k)))] = findRoot(parent, it->second);
+        std::map<std::pair<int, int>, std::vector<int>> facesOfEdge;
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            const auto& loop = merged.faces[faces[k]].loop;
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                const int a = loop[i], b = loop[(i + 1) % loop.size()];
+                facesOfEdge[{std::min(a, b), std::max(a, b)}].push_back(int(k));
             }
+        }
+        for (const auto& [edge, users] : facesOfEdge)
+            if (users.size() == 2)
+                parent[std::size_t(findRoot(parent, users[0]))] = findRoot(parent, users[1]);
         std::map<int, std::vector<std::size_t>> connected; // root -> faces, in file order
         for (std::size_t k = 0; k < faces.size(); ++k)
             connected[findRoot(parent, int(k))].push_back(faces[k]);
@@ -300,8 +318,11 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
                 if (emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0)
                     ++out.counts.emittingFaces;
             }
-            if (closed(part))
+            if (closed(part)) {
                 ++out.counts.closedParts;
+                if (signedVolume(part) < 0.0)
+                    ++out.counts.closedFacingIn;
+            }
             object.parts.push_back(std::move(part));
         }
         out.counts.parts += object.parts.size();

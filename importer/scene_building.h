@@ -23,7 +23,8 @@ inline constexpr double kMaxImportedReflectance = 0.95;
 struct BuildCounts {
     std::size_t objects = 0;
     std::size_t parts = 0;
-    std::size_t closedParts = 0; // every edge shared by two faces, winding consistent
+    std::size_t closedParts = 0;    // every edge shared by two faces, winding consistent
+    std::size_t closedFacingIn = 0; // of those, the ones whose faces look in (a room seen from inside)
     std::size_t materials = 0;
     std::size_t emittingFaces = 0;
     std::size_t turnedFaces = 0; // wound against their neighbours in the file (or a solid turned inside out)

@@ -21,8 +21,12 @@ struct SoupMaterial {
     bool textured = false;
 };
 
+// A mesh as the file has it: the unit within which triangles merge into
+// faces (a modelling tool's separate meshes are separate surfaces). Meshes
+// of one node (several materials of one object, say) share `object`.
 struct SoupMesh {
     std::string name; // the node's name, else the mesh's; may be empty or repeat
+    int object = -1;  // the node it belongs to, counted from 0; -1: a node of its own
 };
 
 struct SoupTriangle {

@@ -103,9 +103,15 @@ model::Check writeObj(const std::string& path, const LitMesh& litMesh, const Dis
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return mesh.triangleFace[a] < mesh.triangleFace[b]; });
     int32_t group = -1;
+    std::string object;
     for (size_t t : order) {
         if (mesh.triangleFace[t] != group) {
             group = mesh.triangleFace[t];
+            if (!mesh.faceObjects.empty() &&
+                (group == mesh.triangleFace[order.front()] || mesh.faceObjects[static_cast<size_t>(group)] != object)) {
+                object = mesh.faceObjects[static_cast<size_t>(group)];
+                out += "o " + groupName(object) + "\n";
+            }
             out += "g " + groupName(mesh.faceIds[static_cast<size_t>(group)]) + "\n";
             if (described)
                 out +=

@@ -173,3 +173,60 @@ TEST(FaceMerging, CornersWithinTheDistanceAreWeldedAndTrianglesOfNoAreaOrRepeate
     EXPECT_EQ(m.counts.degenerate, 2u);
     EXPECT_EQ(m.faces.size(), 1u);
 }
+
+TEST(FaceMerging, ANeighbourCutFinerAlongTheSharedEdgeStillMergesIntoOneFace)
+{
+    // Two unit squares side by side; the right one is cut into four
+    // triangles around the middle of the shared edge, a corner the left
+    // one's edge passes through (a T-junction).
+    Soup s;
+    s.quad({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});
+    const Vec3 mid{1, 0, 0.5};
+    s.triangle({1, 0, 0}, mid, {2, 0, 0});
+    s.triangle(mid, {1, 0, 1}, {2, 0, 1});
+    s.triangle(mid, {2, 0, 1}, {2, 0, 0});
+    const MergedModel m = mergeTriangles(s.soup);
+    EXPECT_EQ(m.counts.tJunctions, 1u) << "the left square's edge is split at the corner";
+    ASSERT_EQ(m.faces.size(), 1u);
+    EXPECT_EQ(m.faces[0].loop.size(), 4u) << "the corner on the straight outline goes again";
+    EXPECT_NEAR(totalArea(m), 2.0, 1e-9);
+    expectConvexFacingUp(m);
+}
+
+TEST(FaceMerging, AHoleFilledWithLongEdgesClosesTheSurface)
+{
+    // A 3 x 3 grid with its middle cell left out, and the hole filled by
+    // two triangles of their own whose edges pass the grid's corners only at
+    // their ends, plus a finer cut of the ring along one side of the hole.
+    Soup s;
+    s.grid(0, 3, 0, 3, 3, [](int i, int j) { return i == 1 && j == 1; });
+    s.quad({1, 0, 1}, {1, 0, 2}, {2, 0, 2}, {2, 0, 1});
+    const MergedModel whole = mergeTriangles(s.soup);
+    ASSERT_EQ(whole.faces.size(), 1u);
+    EXPECT_NEAR(totalArea(whole), 9.0, 1e-9);
+
+    // The same with the hole's filling cut at a point of its edge that the
+    // ring does not have, and the ring's cells cut at points the filling
+    // does not have.
+    Soup t;
+    t.grid(0, 3, 0, 3, 3, [](int i, int j) { return (i == 1 && j == 1) || (i == 0 && j == 1); });
+    t.triangle({0, 0, 1}, {0, 0, 2}, {1, 0, 1.5});
+    t.triangle({0, 0, 2}, {1, 0, 2}, {1, 0, 1.5});
+    t.triangle({0, 0, 1}, {1, 0, 1.5}, {1, 0, 1});
+    t.quad({1, 0, 1}, {1, 0, 2}, {2, 0, 2}, {2, 0, 1});
+    const MergedModel cut = mergeTriangles(t.soup);
+    EXPECT_GE(cut.counts.tJunctions, 1u);
+    ASSERT_EQ(cut.faces.size(), 1u);
+    EXPECT_NEAR(totalArea(cut), 9.0, 1e-9);
+    expectConvexFacingUp(cut);
+}
+
+TEST(FaceMerging, ACornerOfAnotherMeshOnAnEdgeDoesNotSplitIt)
+{
+    Soup s;
+    s.quad({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0});
+    s.triangle({1, 0, 0.5}, {2, 0, 1}, {2, 0, 0}, 0, 1); // another mesh touches the edge's middle
+    const MergedModel m = mergeTriangles(s.soup);
+    EXPECT_EQ(m.counts.tJunctions, 0u);
+    EXPECT_EQ(m.faces.size(), 2u);
+}

@@ -20,6 +20,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 using namespace regio;
 namespace fs = std::filesystem;
@@ -222,25 +223,28 @@ TEST(ImportModel, EveryModelOfAssimpsTestModelsImportsValidOrIsRefusedWithAReaso
     std::printf("assimp-testmodels: %d imported, %d refused with a reason\n", imported, refused);
 }
 
-TEST(ImportModel, AFaceWoundAgainstItsNeighboursIsTurnedAndASolidFacesOut)
+TEST(ImportModel, AFaceWoundAgainstItsNeighboursIsTurnedAndARoomKeepsFacingIn)
 {
-    // A unit cube whose top is written clockwise, and the whole cube once
-    // more inside out: both come in as closed solids facing out.
+    // A unit cube whose top is written clockwise comes in as a closed solid
+    // facing out; the same cube wound inwards throughout is a room seen
+    // from inside and keeps its winding.
     Scratch s;
     const std::string cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
     const std::string topWrong = "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 7 8 4\nf 4 1 5 8\n";
     const std::string inward = "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n";
-    for (const auto& [faces, turned] : {std::pair{topWrong, 1u}, std::pair{inward, 6u}}) {
+    for (const auto& [faces, turned, out] : {std::tuple{topWrong, 1u, true}, std::tuple{inward, 0u, false}}) {
         auto imported = importer::importModel(s.write("cube.obj", "o cube\n" + cube + faces));
         ASSERT_TRUE(imported) << imported.diagnostics().front().message;
         EXPECT_EQ(imported->report.build.turnedFaces, turned);
         EXPECT_EQ(imported->report.build.closedParts, 1u);
+        EXPECT_EQ(imported->report.build.closedFacingIn, out ? 0u : 1u);
         EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
         const model::Part& part = imported->scene.objects.at(0).parts.at(0);
         for (const model::Face& f : part.faces) {
             const auto corners = model::loopPositions(part.vertices, f.loop);
-            EXPECT_GT(glm::dot(model::polygonNormal(corners), model::polygonCentroid(corners) - model::Vec3{0.5}), 0.0)
-                << f.id << " faces out";
+            const double outward =
+                glm::dot(model::polygonNormal(corners), model::polygonCentroid(corners) - model::Vec3{0.5});
+            EXPECT_EQ(outward > 0.0, out) << f.id;
         }
     }
 }
@@ -353,4 +357,25 @@ TEST(ImportModel, ASurfaceNoWindingMakesConsistentIsSplitIntoPartsThatAre)
     ASSERT_TRUE(imported) << imported.diagnostics().front().message;
     EXPECT_GE(imported->scene.objects.at(0).parts.size(), 2u);
     EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
+}
+
+TEST(ImportModel, TheGroupsOfAnObjObjectComeBackAsOneObject)
+{
+    // A cube written one group per face under one "o" (as Regio's own OBJ
+    // export writes a solid): one object, one closed part, six faces.
+    Scratch s;
+    std::string obj = "o cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    const char* faces[] = {"f 1 4 3 2", "f 5 6 7 8", "f 1 2 6 5", "f 2 3 7 6", "f 3 4 8 7", "f 4 1 5 8"};
+    for (int k = 0; k < 6; ++k)
+        obj += "g side" + std::to_string(k) + "\n" + faces[k] + "\n";
+    obj += "o slab\ng top\nv 3 0 0\nv 4 0 0\nv 4 0 1\nv 3 0 1\nf 9 12 11 10\n";
+    auto imported = importer::importModel(s.write("cube.obj", obj));
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    const model::Scene& scene = imported->scene;
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].id, "cube");
+    ASSERT_EQ(scene.objects[0].parts.size(), 1u);
+    EXPECT_EQ(scene.objects[0].parts[0].faces.size(), 6u) << "the groups keep the faces apart";
+    EXPECT_EQ(imported->report.build.closedParts, 1u);
+    EXPECT_EQ(scene.objects[1].id, "slab");
 }
