@@ -2,7 +2,6 @@
 
 #include "model/geometry/geometry.h"
 #include "model/validation/validation.h"
-#include "solver/authoring/bsp_suggest.h"
 #include "solver/authoring/region_proposal.h"
 
 #include <glm/common.hpp>
@@ -33,23 +32,6 @@ void fitSolverSettings(model::Scene& scene)
     const model::Box3 box = boundsOf(scene);
     if (!box.empty)
         scene.solver.patchSize = std::clamp(glm::length(box.size()) / 20.0, 0.05, 1.0);
-}
-
-// One region around everything, with the suggested order: the one BSP tree
-// the automatic regions have to beat.
-model::Result<std::pair<model::Scene, int>> singleTree(const model::Scene& scene)
-{
-    const model::Box3 box = boundsOf(scene);
-    model::Region all;
-    all.id = "region-all";
-    all.min = box.min - Vec3{0.01};
-    all.max = box.max + Vec3{0.01};
-    model::Scene one = solver::withRegions(scene, {all});
-    auto suggestion = solver::suggestBspOrder(one, all.id);
-    if (!suggestion)
-        return suggestion.diagnostics();
-    one.regions.front().bspOrder = suggestion->order;
-    return std::pair{std::move(one), suggestion->suggested.fragments};
 }
 
 } // namespace
@@ -88,20 +70,16 @@ model::Result<Imported> importModel(const std::string& path, const ImportOptions
     warnings.insert(warnings.end(), problems.begin(), problems.end());
 
     if (options.autoRegions) {
-        auto one = singleTree(out.scene);
-        if (!one)
-            return one.diagnostics();
-        out.report.singleTreeFragments = one->second;
+        // The proposal never costs more fragments than one region around
+        // everything with its suggested order (it falls back to that).
         auto proposal = solver::proposeRegions(out.scene);
-        if (proposal && !proposal->regions.empty() && proposal->figures.fragments < one->second) {
-            out.scene = solver::withRegions(out.scene, proposal->regions);
-            out.report.regions = int(proposal->regions.size());
-            out.report.fragments = proposal->figures.fragments;
-        } else {
-            out.scene = std::move(one->first);
-            out.report.regions = 1;
-            out.report.fragments = one->second;
-        }
+        if (!proposal)
+            return proposal.diagnostics();
+        out.scene = solver::withRegions(out.scene, proposal->regions);
+        out.report.regions = int(proposal->regions.size());
+        out.report.fragments = proposal->figures.fragments;
+        out.report.singleTreeFragments =
+            proposal->singleRegionFragments >= 0 ? proposal->singleRegionFragments : proposal->figures.fragments;
     }
     return {std::move(out), std::move(warnings)};
 }

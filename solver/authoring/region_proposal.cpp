@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace regio::solver {
@@ -216,7 +217,10 @@ model::Scene withRegions(const model::Scene& scene, std::vector<model::Region> r
     return out;
 }
 
-model::Result<RegionProposal> proposeRegions(const model::Scene& scene, const RegionProposalOptions& options)
+namespace {
+
+// The sweep alone (the header's heuristic), without the comparison.
+model::Result<RegionProposal> proposeBySweep(const model::Scene& scene, const RegionProposalOptions& options)
 {
     RegionProposal proposal;
     double patchSize = options.patchSize.value_or(scene.solver.patchSize);
@@ -296,6 +300,45 @@ model::Result<RegionProposal> proposeRegions(const model::Scene& scene, const Re
     proposal.figures = std::move(*figures);
     proposal.regions = std::move(proposed.regions);
     return {std::move(proposal), std::move(warnings)};
+}
+
+} // namespace
+
+model::Result<RegionProposal> proposeRegions(const model::Scene& scene, const RegionProposalOptions& options)
+{
+    model::Result<RegionProposal> swept = proposeBySweep(scene, options);
+    if (!swept || !options.neverWorseThanOneRegion || swept->regions.size() <= 1)
+        return swept;
+    // The planes are placed by counting patches, blind to what they do to
+    // the BSP trees: a plane through a room of many small things can cost
+    // more fragments than it saves (the two-light room: 155 against 137).
+    // So the sweep competes with the same sweep cutting no part but the
+    // shell and with one region around everything (each with its suggested
+    // orders), and the fewest fragments win; ties go to fewer regions.
+    std::vector<model::Result<RegionProposal>> candidates;
+    candidates.push_back(std::move(swept));
+    if (options.cutParts) {
+        RegionProposalOptions whole = options;
+        whole.cutParts = false;
+        candidates.push_back(proposeBySweep(scene, whole));
+    }
+    RegionProposalOptions one = options;
+    one.patchThreshold = std::numeric_limits<int>::max();
+    candidates.push_back(proposeBySweep(scene, one));
+    const int oneRegion = candidates.back() ? candidates.back()->figures.fragments : -1;
+    size_t best = 0;
+    for (size_t c = 1; c < candidates.size(); ++c) {
+        if (!candidates[c])
+            continue;
+        const RegionProposal& a = *candidates[c];
+        const RegionProposal& b = *candidates[best];
+        if (a.figures.fragments < b.figures.fragments ||
+            (a.figures.fragments == b.figures.fragments && a.regions.size() < b.regions.size()))
+            best = c;
+    }
+    model::Result<RegionProposal> chosen = std::move(candidates[best]);
+    chosen->singleRegionFragments = oneRegion;
+    return chosen;
 }
 
 } // namespace regio::solver

@@ -25,7 +25,10 @@
 //
 // The leaf boxes tile the scene bounds (touching, never overlapping), so the
 // regional tree always separates them; each gets the suggested BSP order of
-// its contents (solver/authoring/bsp_suggest.h).
+// its contents (solver/authoring/bsp_suggest.h). The planes are chosen by
+// counting patches; what they cost the BSP trees is measured afterwards, and
+// a proposal that costs more fragments than fewer cuts, or than one region,
+// gives way to those (RegionProposalOptions::neverWorseThanOneRegion).
 #include "model/diagnostic.h"
 #include "model/result.h"
 #include "model/scene.h"
@@ -48,6 +51,11 @@ struct RegionProposalOptions {
     // parts gave 37 regions and 1500 fragments against 3 regions and 2472.
     bool cutParts = true;
     bool suggestOrders = true; // fill each region's bspOrder with the suggested order
+    // Never more BSP fragments than one region around everything with its
+    // suggested order: the sweep also competes with itself cutting no part
+    // and with that one region, and the fewest fragments win. Off: the
+    // sweep as it is (for tests of where it puts its planes).
+    bool neverWorseThanOneRegion = true;
     SuggestOptions suggest;
 };
 
@@ -60,6 +68,9 @@ struct RegionProposal {
     std::vector<std::string> straddlingParts;
     // The scene with these regions, prepared by the solver (authored mode).
     SceneBspFigures figures;
+    // The fragments of one region around everything with its suggested
+    // order, where the proposal compared with it; -1 otherwise.
+    int singleRegionFragments = -1;
 };
 
 // Refused when the scene cannot be prepared (its errors). A scene without

@@ -110,10 +110,19 @@ void printRow(const char* scene, const char* setup, const SceneBspFigures& f)
 
 } // namespace
 
+// Where the sweep puts its planes (the tests below but the last ones): the
+// sweep alone, without the comparison with fewer cuts and one region.
+RegionProposalOptions sweepOnly()
+{
+    RegionProposalOptions options;
+    options.neverWorseThanOneRegion = false;
+    return options;
+}
+
 TEST(RegionProposal, TilesTheSceneBoundsWithTouchingBoxes)
 {
     for (const model::Scene& scene : {test::loadSample("two-lights-room"), test::furnishedRoom(1, 100)}) {
-        const model::Result<RegionProposal> proposal = proposeRegions(scene);
+        const model::Result<RegionProposal> proposal = proposeRegions(scene, sweepOnly());
         ASSERT_GT(proposal->regions.size(), 1u);
         expectTiling(proposal->regions, sceneBounds(scene));
     }
@@ -211,7 +220,7 @@ TEST(RegionProposal, KeepsASmallSceneInOneRegion)
     EXPECT_EQ(proposal->regions[0].id, "region-1");
     expectTiling(proposal->regions, sceneBounds(scene));
 
-    RegionProposalOptions fine;
+    RegionProposalOptions fine = sweepOnly();
     fine.patchThreshold = 1;
     const model::Result<RegionProposal> split = proposeRegions(scene, fine);
     ASSERT_EQ(split->regions.size(), 2u) << "the gap between the boxes is the only plane";
@@ -246,7 +255,7 @@ TEST(RegionProposal, SplitsAlongTheOnlyAxisThatHasAGap)
                              "",
                              {*model::makeBox("slabs.a", {0, 0, 0}, {3, 1, 0.2}, "white"),
                               *model::makeBox("slabs.b", {1, 0, 0.3}, {4, 1, 0.5}, "white")}});
-    RegionProposalOptions fine;
+    RegionProposalOptions fine = sweepOnly();
     fine.patchThreshold = 1;
     const model::Result<RegionProposal> proposal = proposeRegions(scene, fine);
     ASSERT_EQ(proposal->regions.size(), 2u);
@@ -268,7 +277,7 @@ TEST(RegionProposal, KeepsPartsThatNoPlaneSeparatesTogether)
                               *model::makeBox("pinwheel.b", {2.05, 0, 0}, {3, 1, 1.95}, "white"),
                               *model::makeBox("pinwheel.c", {1.05, 0, 2.05}, {3, 1, 3}, "white"),
                               *model::makeBox("pinwheel.d", {0, 0, 1.05}, {0.95, 1, 3}, "white")}});
-    RegionProposalOptions fine;
+    RegionProposalOptions fine = sweepOnly();
     fine.patchThreshold = 1;
     fine.cutParts = false;
     const model::Result<RegionProposal> whole = proposeRegions(scene, fine);
@@ -406,4 +415,31 @@ TEST(RegionProposal, AuthoredProposedAndAutomaticRegionsBeatOneBspAndSuggestedOr
             EXPECT_LT(automatic.fragments, single.fragments);
         }
     }
+}
+
+TEST(RegionProposal, NeverCostsMoreFragmentsThanOneRegionWithItsSuggestedOrder)
+{
+    // The two-light room: the sweep's planes cost fragments that one region
+    // with its suggested order does not, so the one region is proposed. The
+    // furnished room: its 37 regions pay, and stay.
+    const model::Scene room = test::loadSample("two-lights-room");
+    const model::Result<RegionProposal> swept = proposeRegions(room, sweepOnly());
+    const model::Result<RegionProposal> chosen = proposeRegions(room);
+    ASSERT_TRUE(swept);
+    ASSERT_TRUE(chosen);
+    EXPECT_GT(swept->figures.fragments, chosen->figures.fragments) << "the sweep alone costs more here";
+    EXPECT_EQ(chosen->regions.size(), 1u);
+    EXPECT_EQ(chosen->figures.fragments, chosen->singleRegionFragments);
+    expectTiling(chosen->regions, sceneBounds(room));
+
+    const model::Scene furnished = test::furnishedRoom(1, 100);
+    const model::Result<RegionProposal> kept = proposeRegions(furnished);
+    ASSERT_TRUE(kept);
+    EXPECT_GT(kept->regions.size(), 1u);
+    EXPECT_LT(kept->figures.fragments, kept->singleRegionFragments);
+    std::printf(
+        "two-light room: sweep %d fragments, chosen %d (%zu region); furnished room: %d regions, %d fragments "
+        "against %d for one region\n",
+        swept->figures.fragments, chosen->figures.fragments, chosen->regions.size(), int(kept->regions.size()),
+        kept->figures.fragments, kept->singleRegionFragments);
 }
