@@ -895,6 +895,105 @@
     </message>
 </context>
 <context>
+    <name>regio::editor::ImportDialog</name>
+    <message>
+        <source>error: </source>
+        <translation>chyba: </translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Import %1</translation>
+    </message>
+    <message>
+        <source>Metres per model unit: 0.001 for a model in millimetres</source>
+        <translation>Metrů na jednotku modelu: 0,001 pro model v milimetrech</translation>
+    </message>
+    <message>
+        <source>Y is up</source>
+        <translation>Y míří vzhůru</translation>
+    </message>
+    <message>
+        <source>Z is up</source>
+        <translation>Z míří vzhůru</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Triangles whose normals differ by at most this angle merge into one face</source>
+        <translation>Trojúhelníky, jejichž normály se liší nejvýše o tento úhel, se sloučí do jedné stěny</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Corners this close are welded; corners this close to a plane lie in it</source>
+        <translation>Takto blízké rohy se svaří; takto blízké rohy k rovině v ní leží</translation>
+    </message>
+    <message>
+        <source>Propose regions and BSP orders</source>
+        <translation>Navrhnout oblasti a pořadí BSP</translation>
+    </message>
+    <message>
+        <source>As a new scene</source>
+        <translation>Jako novou scénu</translation>
+    </message>
+    <message>
+        <source>Into the open scene (one undo step)</source>
+        <translation>Do otevřené scény (jeden krok zpět)</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Měřítko:</translation>
+    </message>
+    <message>
+        <source>Up axis:</source>
+        <translation>Osa vzhůru:</translation>
+    </message>
+    <message>
+        <source>Merge angle:</source>
+        <translation>Úhel slučování:</translation>
+    </message>
+    <message>
+        <source>Merge distance:</source>
+        <translation>Vzdálenost slučování:</translation>
+    </message>
+    <message>
+        <source>Import:</source>
+        <translation>Importovat:</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importovat</translation>
+    </message>
+    <message>
+        <source>Importing %1…</source>
+        <translation>Importuje se %1…</translation>
+    </message>
+    <message>
+        <source>The model cannot be imported (the reasons are below).</source>
+        <translation>Model nelze importovat (důvody jsou níže).</translation>
+    </message>
+    <message>
+        <source>%1 triangles into %2 faces; %3 objects, %4 parts (%5 closed), %6 materials, %7 emitting faces.</source>
+        <translation>Trojúhelníky: %1, z nich stěny: %2; objekty: %3, části: %4 (uzavřené: %5), materiály: %6, vyzařující stěny: %7.</translation>
+    </message>
+    <message>
+        <source>Left out: %1 triangles of no area, %2 repeated, %3 points or lines.</source>
+        <translation>Vynecháno: trojúhelníky bez plochy: %1, opakované: %2, body a čáry: %3.</translation>
+    </message>
+    <message>
+        <source>Regions: %1; BSP fragments: %2 (one BSP tree: %3).</source>
+        <translation>Oblasti: %1; fragmenty BSP: %2 (jeden strom BSP: %3).</translation>
+    </message>
+</context>
+<context>
     <name>regio::editor::LegendWidget</name>
     <message>
         <source>False colour: luminance of the displayed radiosity, W/m²</source>
@@ -1354,6 +1453,38 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>Solve</source>
         <translation>Řešit</translation>
+    </message>
+    <message>
+        <source>Import Model</source>
+        <translation>Importovat model</translation>
+    </message>
+    <message>
+        <source>Models (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl *.3ds *.blend *.off *.x *.lwo *.ase *.ac);;All files (*)</source>
+        <translation>Modely (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl *.3ds *.blend *.off *.x *.lwo *.ase *.ac);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Imported %1 as a new scene</source>
+        <translation>%1 importován jako nová scéna</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Import %1</translation>
+    </message>
+    <message>
+        <source>Imported %1 (objects: %2)</source>
+        <translation>%1 importován (objekty: %2)</translation>
+    </message>
+    <message>
+        <source>&amp;Import Model…</source>
+        <translation>&amp;Importovat model…</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Import a model file (OBJ, glTF, FBX, Collada, PLY, STL, 3DS, ...)</source>
+        <translation>Importovat soubor modelu (OBJ, glTF, FBX, Collada, PLY, STL, 3DS, …)</translation>
     </message>
 </context>
 <context>

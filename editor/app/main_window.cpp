@@ -2,6 +2,7 @@
 
 #include "editor/app/autosave.h"
 #include "editor/app/diagnostics_dialog.h"
+#include "editor/app/import_dialog.h"
 #include "editor/app/preferences_dialog.h"
 #include "editor/app/recent_files.h"
 #include "editor/bsp/bsp_authoring.h"
@@ -10,6 +11,8 @@
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
+#include "editor/document/commands/material_commands.h"
+#include "editor/document/commands/object_commands.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
 #include "editor/objects/authoring.h"
@@ -18,6 +21,8 @@
 #include "editor/regions/region_authoring.h"
 #include "editor/regions/regions_dock.h"
 #include "editor/viewport/viewport.h"
+#include "importer/import_model.h"
+#include "model/edit/merge_scene.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -284,6 +289,43 @@ void MainWindow::open()
         QFileDialog::getOpenFileName(this, tr("Open Scene"), dir, tr("Regio scenes (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
+}
+
+void MainWindow::importModelFile()
+{
+    const QString dir = m_document->filePath().isEmpty() ? QString() : QFileInfo(m_document->filePath()).path();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Model"), dir,
+                                                      tr("Models (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl *.3ds "
+                                                         "*.blend *.off *.x *.lwo *.ase *.ac);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    ImportDialog dialog(path, !m_document->scene().objects.empty(), this);
+    if (dialog.exec() != QDialog::Accepted || !dialog.imported())
+        return;
+    addImported(*dialog.imported(), dialog.target() == ImportDialog::Target::OpenScene, path);
+}
+
+bool MainWindow::addImported(const importer::Imported& imported, bool intoOpenScene, const QString& path)
+{
+    const QString name = QFileInfo(path).fileName();
+    if (!intoOpenScene) {
+        if (!maybeSave())
+            return false;
+        // A new, unsaved scene: closing asks where to save it.
+        m_document->reset(imported.scene, QString(), true);
+        statusBar()->showMessage(tr("Imported %1 as a new scene").arg(name), 5000);
+        return true;
+    }
+    const model::MergeItems items = model::itemsToMerge(m_document->scene(), imported.scene);
+    QUndoStack* stack = m_document->undoStack();
+    stack->beginMacro(tr("Import %1").arg(name));
+    for (const model::Material& material : items.materials)
+        stack->push(new AddMaterial(m_document, material));
+    for (const model::Object& object : items.objects)
+        stack->push(new AddObject(m_document, object));
+    stack->endMacro();
+    statusBar()->showMessage(tr("Imported %1 (objects: %2)").arg(name).arg(items.objects.size()), 5000);
+    return true;
 }
 
 bool MainWindow::openFile(const QString& path, model::Diagnostics* diagnosticsOut)

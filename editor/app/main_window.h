@@ -16,6 +16,10 @@ class QLabel;
 class QMenu;
 class QUndoView;
 
+namespace regio::importer {
+struct Imported;
+}
+
 namespace regio::editor {
 
 class Authoring;
@@ -52,6 +56,12 @@ public:
     PreviewController* preview() const { return m_preview; }
     BspAuthoring* bspAuthoring() const { return m_bsp; }
 
+    // Adds an imported model (File ▸ Import…): as a new scene (after asking
+    // to save the open one; false when the user cancels), or into the open
+    // scene as one undo step, its materials and objects with fresh ids
+    // (model::itemsToMerge).
+    bool addImported(const importer::Imported& imported, bool intoOpenScene, const QString& path);
+
     // Opens a scene. If it cannot be read the current document stays as it
     // is and (when interactive) a dialog lists the diagnostics.
     bool openFile(const QString& path, model::Diagnostics* diagnostics = nullptr);
@@ -72,6 +82,7 @@ private:
 
     void newScene();
     void open();
+    void importModelFile();
     bool save();
     bool saveAs();
     void revert();
@@ -110,7 +121,7 @@ private:
     QLabel* m_problems = nullptr;
 
     struct {
-        QAction *newScene, *open, *save, *saveAs, *revert, *preferences, *quit;
+        QAction *newScene, *open, *importModel, *save, *saveAs, *revert, *preferences, *quit;
         QAction *undo, *redo, *selectAll, *deselect, *duplicate, *remove, *rename;
         QAction *frameSelection, *frameAll, *orthographic, *cullBackFaces, *showGrid, *showRegions;
         QAction *solid, *wireframe, *normals;

@@ -54,6 +54,9 @@ void MainWindow::createActions()
     a.open = makeAction(this, tr("&Open…"), QKeySequence::Open, tr("Open a scene file"));
     a.open->setIcon(style->standardIcon(QStyle::SP_DialogOpenButton));
     connect(a.open, &QAction::triggered, this, &MainWindow::open);
+    a.importModel = makeAction(this, tr("&Import Model…"), QKeySequence(tr("Ctrl+I")),
+                               tr("Import a model file (OBJ, glTF, FBX, Collada, PLY, STL, 3DS, ...)"));
+    connect(a.importModel, &QAction::triggered, this, &MainWindow::importModelFile);
     a.save = makeAction(this, tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a.save->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
     connect(a.save, &QAction::triggered, this, &MainWindow::save);
@@ -192,6 +195,7 @@ void MainWindow::createMenus()
         if (maybeSave())
             openFile(path);
     });
+    file->addAction(a.importModel);
     file->addSeparator();
     file->addAction(a.save);
     file->addAction(a.saveAs);
