@@ -7,6 +7,7 @@
 #include "model/validation/validation.h"
 #include "output/png_writer.h"
 #include "solver/solver.h"
+#include "support/furnished_room.h"
 
 #include <gtest/gtest.h>
 
@@ -378,4 +379,49 @@ TEST(ImportModel, TheGroupsOfAnObjObjectComeBackAsOneObject)
     EXPECT_EQ(scene.objects[0].parts[0].faces.size(), 6u) << "the groups keep the faces apart";
     EXPECT_EQ(imported->report.build.closedParts, 1u);
     EXPECT_EQ(scene.objects[1].id, "slab");
+}
+
+TEST(ImportModel, ATriangulatedFurnishedRoomComesBackAsFewerFacesInRegionsThatBeatOneBspTree)
+{
+    // The generated room of 100 objects written as a modelling tool writes
+    // it: every face a fan of triangles, each object under its "o", the
+    // materials in an .mtl.
+    const model::Scene room = test::furnishedRoom(1, 100);
+    Scratch s;
+    std::string mtl;
+    for (const model::Material& m : room.materials)
+        mtl += "newmtl " + m.id + "\nKd " + std::to_string(m.reflectance.r) + " " + std::to_string(m.reflectance.g) +
+               " " + std::to_string(m.reflectance.b) + "\nKe " + std::to_string(m.emission.r) + " " +
+               std::to_string(m.emission.g) + " " + std::to_string(m.emission.b) + "\n";
+    s.write("room.mtl", mtl);
+    std::string obj = "mtllib room.mtl\n";
+    std::size_t vertices = 0, triangles = 0, faces = 0;
+    for (const model::Object& object : room.objects) {
+        obj += "o " + object.id + "\n";
+        for (const model::Part& part : object.parts)
+            for (const model::Face& face : part.faces) {
+                ++faces;
+                obj += "usemtl " + (face.material.empty() ? part.material : face.material) + "\n";
+                for (const int v : face.loop) {
+                    const model::Vec3& p = part.vertices[std::size_t(v)];
+                    obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+                }
+                for (std::size_t k = 1; k + 1 < face.loop.size(); ++k, ++triangles)
+                    obj += "f " + std::to_string(vertices + 1) + " " + std::to_string(vertices + k + 1) + " " +
+                           std::to_string(vertices + k + 2) + "\n";
+                vertices += face.loop.size();
+            }
+    }
+    auto imported = importer::importModel(s.write("room.obj", obj));
+    ASSERT_TRUE(imported) << imported.diagnostics().front().message;
+    const importer::ImportReport& r = imported->report;
+    EXPECT_EQ(r.merge.trianglesIn, triangles);
+    EXPECT_LT(r.merge.faces, triangles);
+    EXPECT_EQ(r.merge.faces, faces) << "every face of the room back as it was";
+    EXPECT_EQ(r.build.objects, room.objects.size());
+    EXPECT_GT(r.regions, 1);
+    EXPECT_LT(r.fragments, r.singleTreeFragments) << "the regions beat one BSP tree with its suggested order";
+    EXPECT_FALSE(model::hasErrors(model::validateScene(imported->scene)));
+    std::printf("furnished room: %zu triangles -> %zu faces, %d regions, %d BSP fragments (one tree: %d)\n", triangles,
+                r.merge.faces, r.regions, r.fragments, r.singleTreeFragments);
 }
