@@ -14,7 +14,6 @@
 #include <numbers>
 #include <queue>
 #include <set>
-#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -474,11 +473,7 @@ MergedModel mergeTriangles(const TriangleSoup& soup, const MergeOptions& options
         // Every loop starts at its least corner (by x, then y, then z): the
         // solver strips a face from its first corner (paper §5.4), and where
         // a file gives no start, the geometry alone should choose it.
-        const auto least = std::min_element(f.loop.begin(), f.loop.end(), [&](int a, int b) {
-            const Vec3 &p = out.positions[std::size_t(a)], &q = out.positions[std::size_t(b)];
-            return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-        });
-        std::rotate(f.loop.begin(), least, f.loop.end());
+        model::startAtLeastCorner(f.loop, out.positions);
     }
     out.counts.faces = out.faces.size();
     return out;

@@ -1,5 +1,6 @@
 #include "importer/scene_building.h"
 
+#include "model/edit/edit_support.h"
 #include "model/geometry/geometry.h"
 #include "model/io/printable.h"
 
@@ -17,22 +18,6 @@
 namespace regio::importer {
 
 namespace {
-
-// Ids of every kind share one namespace: the second "light" is "light-2".
-class UniqueIds {
-public:
-    std::string take(const std::string& wanted)
-    {
-        std::string id = wanted;
-        for (int n = 2; m_used.contains(id); ++n)
-            id = wanted + "-" + std::to_string(n);
-        m_used.insert(id);
-        return id;
-    }
-
-private:
-    std::set<std::string> m_used;
-};
 
 int findRoot(std::vector<int>& parent, int i)
 {
@@ -160,7 +145,9 @@ std::string idFrom(const std::string& name, const std::string& fallback)
 BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
 {
     BuiltScene out;
-    UniqueIds ids;
+    // Ids of every kind share one namespace: the second "light" is "light-2".
+    const model::Scene none;
+    model::edit::IdAllocator ids(none);
 
     // Materials, in the file's order, those that some face uses.
     std::vector<int> usedMaterial(soup.materials.size(), 0);
@@ -172,7 +159,7 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
             continue;
         const SoupMaterial& from = soup.materials[m];
         model::Material material;
-        material.id = ids.take(idFrom(from.name, "material-" + std::to_string(m + 1)));
+        material.id = ids.fresh(idFrom(from.name, "material-" + std::to_string(m + 1)));
         material.name = model::validUtf8(from.name);
         Rgb reflectance = glm::max(from.diffuse, Rgb{0.0});
         const double top = std::max({reflectance.r, reflectance.g, reflectance.b});
@@ -256,7 +243,7 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
 
         const std::string meshName = soup.meshes[std::size_t(mesh)].name;
         model::Object object;
-        object.id = ids.take(idFrom(meshName, "object-" + std::to_string(mesh + 1)));
+        object.id = ids.fresh(idFrom(meshName, "object-" + std::to_string(mesh + 1)));
         object.name = model::validUtf8(meshName);
         // The faces of a piece as a part: vertices and loops, wound alike.
         const auto partOf = [&](const std::vector<std::size_t>& members, std::size_t& turned) {
@@ -300,7 +287,7 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
         for (std::size_t p = 0; p < parts.size(); ++p) {
             model::Part& part = parts[p];
             const std::vector<std::size_t>& members = partFaces[p];
-            part.id = ids.take(parts.size() == 1 ? object.id + ".body" : object.id + ".part" + std::to_string(p + 1));
+            part.id = ids.fresh(parts.size() == 1 ? object.id + ".body" : object.id + ".part" + std::to_string(p + 1));
             // The part's material: the one most of its faces use.
             std::map<int, int> votes;
             for (const std::size_t f : members)
@@ -311,7 +298,7 @@ BuiltScene buildScene(const MergedModel& merged, const TriangleSoup& soup)
             part.material = materialId[std::size_t(common)];
             for (std::size_t k = 0; k < members.size(); ++k) {
                 const MergedFace& from = merged.faces[members[k]];
-                part.faces[k].id = ids.take(part.id + ".f" + std::to_string(k + 1));
+                part.faces[k].id = ids.fresh(part.id + ".f" + std::to_string(k + 1));
                 if (from.material != common)
                     part.faces[k].material = materialId[std::size_t(from.material)];
                 const Rgb emission = soup.materials[std::size_t(from.material)].emission;

@@ -11,8 +11,7 @@
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
-#include "editor/document/commands/material_commands.h"
-#include "editor/document/commands/object_commands.h"
+#include "editor/document/commands/import_command.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
 #include "editor/objects/authoring.h"
@@ -22,7 +21,6 @@
 #include "editor/regions/regions_dock.h"
 #include "editor/viewport/viewport.h"
 #include "importer/import_model.h"
-#include "model/edit/merge_scene.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -316,15 +314,10 @@ bool MainWindow::addImported(const importer::Imported& imported, bool intoOpenSc
         statusBar()->showMessage(tr("Imported %1 as a new scene").arg(name), 5000);
         return true;
     }
-    const model::MergeItems items = model::itemsToMerge(m_document->scene(), imported.scene);
-    QUndoStack* stack = m_document->undoStack();
-    stack->beginMacro(tr("Import %1").arg(name));
-    for (const model::Material& material : items.materials)
-        stack->push(new AddMaterial(m_document, material));
-    for (const model::Object& object : items.objects)
-        stack->push(new AddObject(m_document, object));
-    stack->endMacro();
-    statusBar()->showMessage(tr("Imported %1 (objects: %2)").arg(name).arg(items.objects.size()), 5000);
+    model::MergeItems items = model::itemsToMerge(m_document->scene(), imported.scene);
+    const std::size_t objects = items.objects.size();
+    m_document->undoStack()->push(new AddSceneItems(m_document, tr("Import %1").arg(name), std::move(items)));
+    statusBar()->showMessage(tr("Imported %1 (objects: %2)").arg(name).arg(objects), 5000);
     return true;
 }
 

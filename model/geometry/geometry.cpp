@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 namespace regio::model {
 
@@ -77,6 +78,15 @@ Vec3 polygonNormal(std::span<const Vec3> loop)
     Vec3 n = newellNormal(loop);
     double len = glm::length(n);
     return len > kAreaEpsilon ? n / len : Vec3{0.0};
+}
+
+void startAtLeastCorner(std::vector<int>& loop, std::span<const Vec3> positions)
+{
+    const auto least = std::min_element(loop.begin(), loop.end(), [&](int a, int b) {
+        const Vec3 &p = positions[std::size_t(a)], &q = positions[std::size_t(b)];
+        return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    });
+    std::rotate(loop.begin(), least, loop.end());
 }
 
 Vec3 polygonCentroid(std::span<const Vec3> loop)

@@ -42,6 +42,10 @@ enum class Side { Front, Back, On, Spanning };
 Vec3 newellNormal(std::span<const Vec3> loop);
 double polygonArea(std::span<const Vec3> loop);
 Vec3 polygonCentroid(std::span<const Vec3> loop);
+// Turns a loop of indices into `positions` so that it starts at its least
+// corner (by x, then y, then z), keeping its order: where a loop has no
+// given start (a face merged from triangles), the geometry chooses it.
+void startAtLeastCorner(std::vector<int>& loop, std::span<const Vec3> positions);
 // Unit normal; zero vector for a degenerate polygon.
 Vec3 polygonNormal(std::span<const Vec3> loop);
 Plane polygonPlane(std::span<const Vec3> loop);

@@ -20,7 +20,6 @@
 #include <filesystem>
 #include <map>
 #include <string>
-#include <tuple>
 #include <vector>
 
 using namespace regio;
@@ -111,13 +110,8 @@ TEST_P(RoundTrip, GivesTheSameFacesAndTheSameRadiosity)
         for (model::Part& part : object.parts) {
             for (model::Vec3& v : part.vertices)
                 v = model::Vec3(glm::vec3(v));
-            for (model::Face& face : part.faces) {
-                const auto least = std::min_element(face.loop.begin(), face.loop.end(), [&](int a, int b) {
-                    const model::Vec3 &p = part.vertices[std::size_t(a)], &q = part.vertices[std::size_t(b)];
-                    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-                });
-                std::rotate(face.loop.begin(), least, face.loop.end());
-            }
+            for (model::Face& face : part.faces)
+                model::startAtLeastCorner(face.loop, part.vertices);
         }
     std::unique_ptr<solver::Solver> solved;
     const std::map<std::string, model::Rgb> before = solve(original, &solved);
