@@ -18,7 +18,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
   qt6-charts-dev
-  libglm-dev nlohmann-json3-dev libstb-dev libpng-dev libassimp-dev assimp-testmodels
+  libglm-dev nlohmann-json3-dev libstb-dev libpng-dev libssl-dev libassimp-dev assimp-testmodels
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl-dev libgl1-mesa-dri fonts-dejavu-core
   python3 python3-jsonschema

@@ -1,6 +1,7 @@
 // `regio-solve solve` as a user and a script see it: the real executable, its
 // options, its JSON report, its progress line and its exit status.
 #include "support/command_run.h"
+#include "support/small_scenes.h"
 #include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
@@ -38,19 +39,6 @@ CommandRun solve(const std::vector<std::string>& args)
 }
 
 const fs::path kData = REGIO_TEST_DATA;
-
-// Two facing panels: a lamp and a grey receiver, 8 triangles in all.
-const char* const kSmallScene = R"({ "format": "regio-scene", "version": 1,
-  "materials": [ { "id": "lamp", "reflectance": [0, 0, 0], "emission": [10, 8, 6] },
-                 { "id": "grey", "reflectance": [0.5, 0.4, 0.3], "emission": [0, 0, 0] } ],
-  "objects": [ { "id": "light", "parts": [ { "id": "light.panel", "material": "lamp",
-      "vertices": [[0,1,0], [1,1,0], [1,1,1], [0,1,1]],
-      "faces": [ { "id": "light.down", "loop": [0, 1, 2, 3] } ] } ] },
-    { "id": "floor", "parts": [ { "id": "floor.panel", "material": "grey",
-      "vertices": [[0,0,0], [0,0,1], [1,0,1], [1,0,0]],
-      "faces": [ { "id": "floor.up", "loop": [0, 1, 2, 3] } ] } ] } ],
-  "solver": { "hemicube": 50, "patchSize": 0.5, "elementsPerPatch": 1, "maxIterations": 500, "convergence": 0.001 }
-})";
 
 std::set<std::string> faceIdsOfFile(const fs::path& path)
 {
