@@ -59,14 +59,6 @@ struct SceneJob {
     std::string error;     // the first error, for the summary
 };
 
-std::string sceneNameOf(const std::string& file)
-{
-    std::string name = fs::path(file).filename().string();
-    if (name.size() > 5 && name.ends_with(".json"))
-        name.resize(name.size() - 5);
-    return name;
-}
-
 class Batch {
 public:
     Batch(const SolveOptions& options, std::vector<SceneJob> jobs)
@@ -346,6 +338,14 @@ void printSummary(std::ostream& out, const std::vector<SceneJob>& jobs, double s
 }
 
 } // namespace
+
+std::string sceneNameOf(const std::string& file)
+{
+    std::string name = fs::path(file).filename().string();
+    if (name.size() > 5 && name.ends_with(".json"))
+        name.resize(name.size() - 5);
+    return name;
+}
 
 int runBatch(const SolveOptions& given)
 {

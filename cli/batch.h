@@ -5,8 +5,14 @@
 // with the same bytes and options, and stopping cleanly on Ctrl-C or SIGTERM.
 #include "cli/solve_options.h"
 
+#include <string>
+
 namespace regio::cli {
 
 int runBatch(const SolveOptions& options);
+
+// What a scene's files in the directory are named after: its file's name
+// without .json ("rooms/hall.json" -> "hall").
+std::string sceneNameOf(const std::string& file);
 
 } // namespace regio::cli

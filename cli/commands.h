@@ -17,6 +17,10 @@ int runCheck(int argc, char** argv);
 // `regio-solve solve ...`: the batch radiosity solve (solve_command.cpp).
 int runSolve(int argc, char** argv);
 
+// `regio-solve sweep SCENE --set PATH=VALUES... --out-dir DIR`: variant
+// scenes of a parameter study, solved with --solve (sweep_command.cpp).
+int runSweep(int argc, char** argv);
+
 // `regio-solve import MODEL OUT.json ...`: a model file into a scene (import_command.cpp).
 int runImport(int argc, char** argv);
 

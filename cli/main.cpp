@@ -17,7 +17,9 @@ const char* const kUsage =
     "\n"
     "Commands:\n"
     "  check SCENE.json...   check scene files and print every problem found\n"
-    "  solve SCENE.json ...  compute the radiosity solution of a scene\n"
+    "  solve SCENE.json ...  compute the radiosity solution of scenes, one or a\n"
+    "                        batch into a directory (--out-dir)\n"
+    "  sweep SCENE.json ...  write (and solve) the variants of a parameter study\n"
     "  import MODEL OUT.json import a model file (OBJ, glTF, FBX, ...) as a scene\n"
     "\n"
     "Options:\n"
@@ -50,6 +52,8 @@ int main(int argc, char** argv)
         return runCheck(argc - 1, argv + 1);
     if (command == "solve")
         return runSolve(argc - 1, argv + 1);
+    if (command == "sweep")
+        return runSweep(argc - 1, argv + 1);
     if (command == "import")
         return runImport(argc - 1, argv + 1);
     std::cerr << "regio-solve: unknown command '" << command << "'\n"

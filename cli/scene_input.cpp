@@ -24,7 +24,14 @@ SceneInput readSceneInput(const std::string& name)
         input.diagnostics = text.takeDiagnostics();
         return input;
     }
-    model::Result<model::Scene> read = model::parseScene(*text);
+    return sceneInputFromText(name, *text);
+}
+
+SceneInput sceneInputFromText(const std::string& name, const std::string& text)
+{
+    SceneInput input;
+    input.name = name;
+    model::Result<model::Scene> read = model::parseScene(text);
     input.diagnostics = read.takeDiagnostics();
     if (read) {
         input.scene = std::move(*read);

@@ -20,6 +20,9 @@ struct SceneInput {
 // Reads, parses and validates one scene file. Never throws.
 SceneInput readSceneInput(const std::string& name);
 
+// The same for text already read (named `name` in diagnostics).
+SceneInput sceneInputFromText(const std::string& name, const std::string& text);
+
 // kExitFailure if unreadable, kExitErrors if any error, else kExitOk.
 int exitCodeOf(const SceneInput& input);
 

@@ -3,8 +3,8 @@
 // exit status, the JSON progress lines, a rerun that solves nothing twice,
 // and a batch stopped by SIGTERM that loses nothing and resumes.
 #include "support/command_run.h"
-#include "support/small_scenes.h"
 #include "support/sample_scenes.h"
+#include "support/small_scenes.h"
 
 #include <gtest/gtest.h>
 

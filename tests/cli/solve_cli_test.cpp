@@ -1,8 +1,8 @@
 // `regio-solve solve` as a user and a script see it: the real executable, its
 // options, its JSON report, its progress line and its exit status.
 #include "support/command_run.h"
-#include "support/small_scenes.h"
 #include "support/sample_scenes.h"
+#include "support/small_scenes.h"
 
 #include <gtest/gtest.h>
 
