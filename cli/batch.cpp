@@ -9,6 +9,7 @@
 #include "cli/batch.h"
 
 #include "cli/batch_progress.h"
+#include "cli/batch_summary.h"
 #include "cli/commands.h"
 #include "cli/content_hash.h"
 #include "cli/interrupt.h"
@@ -35,29 +36,6 @@ namespace regio::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-enum class Outcome { NotStarted, Solved, Skipped, Failed, Interrupted };
-
-const char* outcomeName(Outcome outcome)
-{
-    switch (outcome) {
-    case Outcome::NotStarted: return "not started";
-    case Outcome::Solved: return "solved";
-    case Outcome::Skipped: return "skipped";
-    case Outcome::Failed: return "failed";
-    case Outcome::Interrupted: return "interrupted";
-    }
-    return "";
-}
-
-struct SceneJob {
-    std::string file; // as given
-    std::string name; // the file's name without .json: DIR/NAME.report.json
-    Outcome outcome = Outcome::NotStarted;
-    int exitCode = kExitOk;
-    nlohmann::json report; // what DIR/NAME.report.json holds (or held, when skipped)
-    std::string error;     // the first error, for the summary
-};
 
 class Batch {
 public:
@@ -290,53 +268,6 @@ void Batch::solveOne(int index, SceneJob& job)
     m_progress.finished(index, job.name, "solved", line, fields);
 }
 
-// The table people read at the end: one row per scene.
-void printSummary(std::ostream& out, const std::vector<SceneJob>& jobs, double seconds)
-{
-    std::size_t width = 5;
-    for (const SceneJob& job : jobs)
-        width = std::max(width, model::printable(job.name).size());
-    char row[512];
-    std::snprintf(row, sizeof row, "%-*s  %-11s  %10s  %9s  %9s  %8s\n", static_cast<int>(width), "scene", "status",
-                  "iterations", "unshot %", "elements", "seconds");
-    out << row;
-    std::map<Outcome, int> counts;
-    for (const SceneJob& job : jobs) {
-        ++counts[job.outcome];
-        const nlohmann::json& r = job.report;
-        const auto number = [&](const nlohmann::json& value) { return value.is_number() ? value.get<double>() : -1.0; };
-        const auto field = [&](const char* key) {
-            return r.is_object() && r.contains(key) ? r[key] : nlohmann::json();
-        };
-        const double iterations = number(field("iterations"));
-        const double unshot = number(field("unshotRatio"));
-        const double elements = number(field("elements"));
-        const nlohmann::json times = field("seconds");
-        const double secs = times.is_object() && times.contains("total") ? number(times["total"]) : -1.0;
-        const auto cell = [](double value, const char* format) {
-            char text[32] = "-";
-            if (value >= 0.0)
-                std::snprintf(text, sizeof text, format, value);
-            return std::string(text);
-        };
-        std::snprintf(row, sizeof row, "%-*s  %-11s  %10s  %9s  %9s  %8s\n", static_cast<int>(width),
-                      model::printable(job.name).c_str(), outcomeName(job.outcome), cell(iterations, "%.0f").c_str(),
-                      cell(unshot < 0 ? -1.0 : 100.0 * unshot, "%.3g").c_str(), cell(elements, "%.0f").c_str(),
-                      job.outcome == Outcome::Skipped ? "-" : cell(secs, "%.2f").c_str());
-        out << row;
-        if (job.outcome == Outcome::Failed && !job.error.empty())
-            out << "  " << model::printable(job.error) << "\n";
-    }
-    out << jobs.size() << (jobs.size() == 1 ? " scene: " : " scenes: ") << counts[Outcome::Solved] << " solved, "
-        << counts[Outcome::Skipped] << " skipped, " << counts[Outcome::Failed] << " failed";
-    if (counts[Outcome::Interrupted] > 0 || counts[Outcome::NotStarted] > 0)
-        out << ", " << counts[Outcome::Interrupted] << " interrupted, " << counts[Outcome::NotStarted]
-            << " not started";
-    char total[64];
-    std::snprintf(total, sizeof total, " in %.2f s\n", seconds);
-    out << total << std::flush;
-}
-
 } // namespace
 
 std::string sceneNameOf(const std::string& file)
@@ -372,14 +303,19 @@ int runBatch(const SolveOptions& given)
     }
 
     // Scenes at once and threads per solve: the machine's cores shared out.
+    // Whole scenes side by side use the cores better than one scene's
+    // threads do (its shots wait for one another; docs/batch.md), so a
+    // batch of many scenes runs one per core unless told otherwise.
     const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    int threadsPerSolve = options.solver.threads;
-    if (threadsPerSolve == 0) {
-        threadsPerSolve = options.jobs > 0 ? std::max(1, cores / options.jobs) : std::min(cores, 8);
-        options.solver.threads = threadsPerSolve;
-    }
-    const int workers =
-        std::min(options.jobs > 0 ? options.jobs : std::max(1, cores / threadsPerSolve), static_cast<int>(jobs.size()));
+    const int sceneCount = static_cast<int>(jobs.size());
+    int workers = options.jobs;
+    if (workers == 0)
+        workers = options.solver.threads > 0 ? std::max(1, cores / options.solver.threads) : cores;
+    workers = std::min(workers, sceneCount);
+    if (options.solver.threads == 0)
+        options.solver.threads = std::clamp(cores / workers, 1, 8);
+    if (!options.cacheGiven)
+        options.solver.formFactorCacheBytes /= static_cast<std::size_t>(workers);
 
     const InterruptGuard interrupt;
     Batch batch(options, std::move(jobs));
@@ -390,17 +326,13 @@ int runBatch(const SolveOptions& given)
         printSummary(table, batch.jobs(), batch.progress().elapsed());
 
     int exitCode = kExitOk;
-    std::map<std::string, int> counts;
     nlohmann::json reports = nlohmann::json::array();
     for (const SceneJob& job : batch.jobs()) {
         exitCode = std::max(exitCode, job.exitCode);
-        ++counts[outcomeName(job.outcome)];
         if (!job.report.is_null())
             reports.push_back(job.report);
     }
-    nlohmann::json summary{{"scenes", batch.jobs().size()}};
-    for (const auto& [name, count] : counts)
-        summary[name == std::string("not started") ? "not_started" : name] = count;
+    nlohmann::json summary = summaryCounts(batch.jobs());
     batch.progress().summary(std::move(summary));
 
     if (options.reportPath && !writeReportTo(*options.reportPath, reports))

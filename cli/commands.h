@@ -21,6 +21,10 @@ int runSolve(int argc, char** argv);
 // scenes of a parameter study, solved with --solve (sweep_command.cpp).
 int runSweep(int argc, char** argv);
 
+// `regio-solve summary DIR [SCENES...]`: a batch's table from its reports
+// (summary_command.cpp).
+int runSummary(int argc, char** argv);
+
 // `regio-solve import MODEL OUT.json ...`: a model file into a scene (import_command.cpp).
 int runImport(int argc, char** argv);
 

@@ -20,6 +20,7 @@ const char* const kUsage =
     "  solve SCENE.json ...  compute the radiosity solution of scenes, one or a\n"
     "                        batch into a directory (--out-dir)\n"
     "  sweep SCENE.json ...  write (and solve) the variants of a parameter study\n"
+    "  summary DIR           the table of a batch from the reports in DIR\n"
     "  import MODEL OUT.json import a model file (OBJ, glTF, FBX, ...) as a scene\n"
     "\n"
     "Options:\n"
@@ -54,6 +55,8 @@ int main(int argc, char** argv)
         return runSolve(argc - 1, argv + 1);
     if (command == "sweep")
         return runSweep(argc - 1, argv + 1);
+    if (command == "summary")
+        return runSummary(argc - 1, argv + 1);
     if (command == "import")
         return runImport(argc - 1, argv + 1);
     std::cerr << "regio-solve: unknown command '" << command << "'\n"

@@ -53,9 +53,10 @@ const char* const kSolveUsage =
     "                          resumes where it stopped\n"
     "  --format LIST           outputs per scene, comma-separated: glb, gltf,\n"
     "                          ply, obj, png (default: the report only)\n"
-    "  --jobs N                solve up to N scenes at once, 1..64 (default:\n"
-    "                          cores / --threads; with --jobs and no --threads,\n"
-    "                          each solve gets cores / N threads)\n"
+    "  --jobs N                solve up to N scenes at once, 1..64 (default: one\n"
+    "                          per core, or cores / --threads; each solve gets\n"
+    "                          cores / N threads, and 1024 / N MB of --cache-mb,\n"
+    "                          unless those are given)\n"
     "  --force                 solve every scene, even those already solved\n"
     "  --progress text|json    json: one JSON line per scene event and per\n"
     "                          percent of a solve on standard output, for tools\n"
@@ -231,6 +232,7 @@ std::optional<int> parseSolveOptions(int argc, char** argv, SolveOptions& option
             if (!parseNumber(value, mb) || mb < 0 || mb > (1LL << 24))
                 return solveUsageError("--cache-mb expects megabytes from 0 to 16777216, not '" + value + "'");
             options.solver.formFactorCacheBytes = static_cast<std::size_t>(mb) << 20;
+            options.cacheGiven = true;
         } else if (arg == "--visibility") {
             options.solver.visibility = model::parseVisibility(value);
             if (!options.solver.visibility)

@@ -31,7 +31,8 @@ struct SolveOptions {
     // The batch: one report and the requested outputs per scene in outDir.
     std::optional<std::string> outDir;
     std::vector<BatchFormat> formats;
-    int jobs = 0; // 0 = cores / threads per solve
+    int jobs = 0;            // 0 = one per core, or cores / --threads
+    bool cacheGiven = false; // --cache-mb
     bool force = false;
     ProgressStyle progress = ProgressStyle::Text;
     // The options that change a solution or its files, as given, in order:
