@@ -15,7 +15,7 @@ build="${REGIO_BUILD_DIR:-$root/build}"
 
 # Everything Regio needs, from Debian 12's archive only.
 packages=(
-  g++ cmake ninja-build pkg-config
+  g++ cmake ninja-build pkg-config dpkg-dev
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
   qt6-charts-dev
   libglm-dev nlohmann-json3-dev libstb-dev libpng-dev libssl-dev libassimp-dev assimp-testmodels

@@ -1,5 +1,6 @@
 // Authoring: actions, menus and the interactive (dialog) entry points.
 #include "editor/objects/authoring.h"
+#include "editor/app/sample_scenes.h"
 
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
@@ -143,7 +144,7 @@ void Authoring::populateContextMenu(QMenu* menu)
 
 void Authoring::populateExamplesMenu(QMenu* menu, std::function<void(const QString&)> open)
 {
-    const QDir dir(QStringLiteral(REGIO_SAMPLE_SCENES));
+    const QDir dir(sampleScenesFolder());
     const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
     for (const QString& file : files) {
         const QString path = dir.absoluteFilePath(file);

@@ -1,0 +1,19 @@
+#include "editor/app/sample_scenes.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+
+namespace regio::editor {
+
+QString sampleScenesFolder(const QString& applicationDir)
+{
+    const QString installed = QDir::cleanPath(applicationDir + QStringLiteral("/../share/regio/scenes"));
+    if (QFileInfo(installed).isDir())
+        return installed;
+    return QStringLiteral(REGIO_SAMPLE_SCENES);
+}
+
+QString sampleScenesFolder() { return sampleScenesFolder(QCoreApplication::applicationDirPath()); }
+
+} // namespace regio::editor
