@@ -2,6 +2,7 @@
 
 #include "cli/commands.h"
 
+#include "model/diagnostic_subject.h"
 #include "model/io/file_io.h"
 #include "model/io/printable.h"
 #include "model/io/scene_json.h"
@@ -56,6 +57,8 @@ std::string formatDiagnostic(const std::string& file, const model::Diagnostic& d
         out += ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column);
     if (!diagnostic.pointer.empty())
         out += ": " + model::printable(diagnostic.pointer);
+    if (const std::string subject = model::describeSubject(diagnostic); !subject.empty())
+        out += " (" + subject + ")";
     out += diagnostic.isError() ? ": error: " : ": warning: ";
     out += model::printable(diagnostic.message);
     return out;

@@ -871,6 +871,26 @@
         <source>Problem</source>
         <translation>Problém</translation>
     </message>
+    <message>
+        <source>material %1</source>
+        <translation>materiál %1</translation>
+    </message>
+    <message>
+        <source>object %1</source>
+        <translation>objekt %1</translation>
+    </message>
+    <message>
+        <source>part %1</source>
+        <translation>část %1</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>stěna %1</translation>
+    </message>
+    <message>
+        <source>region %1</source>
+        <translation>oblast %1</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::HemicubeDialog</name>

@@ -1,5 +1,8 @@
 #include "editor/docks/diagnostics_model.h"
 
+#include "model/diagnostic_subject.h"
+#include "model/io/printable.h"
+
 #include "editor/document/qt_conversions.h"
 
 #include <QApplication>
@@ -46,9 +49,26 @@ QString DiagnosticsModel::locationText(const model::Diagnostic& d)
 {
     if (d.line > 0)
         return tr("line %1, column %2").arg(d.line).arg(d.column);
-    if (!d.pointer.empty())
-        return toQString(d.pointer);
-    return tr("(whole scene)");
+    if (d.pointer.empty())
+        return tr("(whole scene)");
+    // The element at fault by its id first, which stays right when the file
+    // is edited; the pointer after it.
+    if (const std::optional<model::DiagnosticSubject> subject = model::subjectOf(d)) {
+        const QString id = toQString(model::printable(subject->id));
+        QString what;
+        if (subject->kind == "material")
+            what = tr("material %1").arg(id);
+        else if (subject->kind == "object")
+            what = tr("object %1").arg(id);
+        else if (subject->kind == "part")
+            what = tr("part %1").arg(id);
+        else if (subject->kind == "face")
+            what = tr("face %1").arg(id);
+        else
+            what = tr("region %1").arg(id);
+        return what + QStringLiteral("  ") + toQString(d.pointer);
+    }
+    return toQString(d.pointer);
 }
 
 QVariant DiagnosticsModel::data(const QModelIndex& index, int role) const

@@ -374,18 +374,62 @@ bool checkFormatAndMigrate(json& document, Diagnostics& diagnostics)
 
 } // namespace
 
+namespace {
+
+// The reader names a value at fault by its pointer. This gives each of its
+// diagnostics the ids of the elements the pointer enters, read from the
+// document itself, so that it names the face (part, material, region) at
+// fault even where the reader stopped before it knew the face's id.
+void nameElements(const nlohmann::json& document, Diagnostics& diagnostics)
+{
+    static const char* const kCollections[] = {"materials", "objects", "parts", "faces", "regions"};
+    for (Diagnostic& d : diagnostics) {
+        if (!d.idPath.empty() || d.pointer.empty())
+            continue;
+        const nlohmann::json* node = &document;
+        std::string previous;
+        for (std::size_t start = 1; start <= d.pointer.size() && node;) {
+            const std::size_t slash = d.pointer.find('/', start);
+            const std::size_t end = slash == std::string::npos ? d.pointer.size() : slash;
+            std::string token = d.pointer.substr(start, end - start);
+            start = end + 1;
+            for (std::size_t at = 0; (at = token.find('~', at)) != std::string::npos; ++at)
+                token.replace(at, 2, token.compare(at, 2, "~1") == 0 ? "/" : "~");
+            if (node->is_object()) {
+                const auto it = node->find(token);
+                node = it == node->end() ? nullptr : &*it;
+            } else if (node->is_array() && !token.empty() && token.size() < 10 &&
+                       token.find_first_not_of("0123456789") == std::string::npos && std::stoul(token) < node->size()) {
+                node = &(*node)[std::stoul(token)];
+                const bool collection = std::any_of(std::begin(kCollections), std::end(kCollections),
+                                                    [&](const char* name) { return previous == name; });
+                if (collection && node->is_object() && node->contains("id") && (*node)["id"].is_string())
+                    d.idPath.push_back((*node)["id"].get<std::string>());
+            } else {
+                node = nullptr;
+            }
+            previous = token;
+        }
+    }
+}
+
+} // namespace
+
 Result<Scene> parseScene(std::string_view text)
 {
     Diagnostics diagnostics;
     try {
         detail::JsonText parsed = detail::parseJsonText(text);
         diagnostics = std::move(parsed.diagnostics);
-        if (!parsed.document || hasErrors(diagnostics))
+        if (!parsed.document)
             return diagnostics;
-        if (!checkFormatAndMigrate(*parsed.document, diagnostics))
+        if (hasErrors(diagnostics) || !checkFormatAndMigrate(*parsed.document, diagnostics)) {
+            nameElements(*parsed.document, diagnostics);
             return diagnostics;
+        }
         Scene scene;
         detail::readSceneDocument(*parsed.document, scene, diagnostics);
+        nameElements(*parsed.document, diagnostics);
         if (hasErrors(diagnostics))
             return diagnostics;
         return {std::move(scene), std::move(diagnostics)};

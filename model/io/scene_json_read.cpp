@@ -3,8 +3,10 @@
 // offending value and reading goes on, so one pass lists all of them. Ids and
 // references between elements are checked by validateScene, not here.
 #include "model/io/scene_json_detail.h"
+#include "model/limits.h"
 
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <string_view>
 
@@ -196,6 +198,32 @@ private:
         return readVec3Value(*value, appendPointer(pointer, key), out);
     }
 
+    // A point of the scene: finite and within kMaxCoordinate of the origin.
+    bool readPositionValue(const json& value, const std::string& pointer, Vec3& out)
+    {
+        if (!readVec3Value(value, pointer, out))
+            return false;
+        for (glm::length_t i = 0; i < 3; ++i)
+            if (std::abs(out[i]) > kMaxCoordinate) {
+                char text[160];
+                std::snprintf(text, sizeof text,
+                              "coordinate %g m is beyond %g m from the origin, the largest scene Regio handles "
+                              "(a model in the wrong unit?)",
+                              out[i], kMaxCoordinate);
+                error(appendPointer(pointer, static_cast<std::size_t>(i)), text);
+                return false;
+            }
+        return true;
+    }
+
+    bool readPosition(const json& object, const std::string& pointer, const char* key, Required required, Vec3& out)
+    {
+        const json* value = member(object, pointer, key, required);
+        if (!value)
+            return false;
+        return readPositionValue(*value, appendPointer(pointer, key), out);
+    }
+
     bool readVec3Value(const json& value, const std::string& pointer, Vec3& out)
     {
         if (!value.is_array() || value.size() != 3) {
@@ -273,7 +301,8 @@ private:
             const std::string here = pointer + "/vertices";
             part.vertices.reserve(vertices->size());
             for (std::size_t i = 0; i < vertices->size(); ++i)
-                verticesOk &= readVec3Value((*vertices)[i], appendPointer(here, i), part.vertices.emplace_back(0.0));
+                verticesOk &=
+                    readPositionValue((*vertices)[i], appendPointer(here, i), part.vertices.emplace_back(0.0));
         }
         if (const json* faces = arrayMember(value, pointer, "faces", Required::Yes)) {
             for (std::size_t i = 0; i < faces->size(); ++i)
@@ -324,8 +353,8 @@ private:
         IdScope scope(*this, region.id);
         checkKeys(value, pointer, {"id", "name", "min", "max", "bspOrder"});
         readString(value, pointer, "name", Required::No, region.name);
-        readVec3(value, pointer, "min", Required::Yes, region.min);
-        readVec3(value, pointer, "max", Required::Yes, region.max);
+        readPosition(value, pointer, "min", Required::Yes, region.min);
+        readPosition(value, pointer, "max", Required::Yes, region.max);
         if (const json* order = arrayMember(value, pointer, "bspOrder", Required::No)) {
             for (std::size_t i = 0; i < order->size(); ++i) {
                 if (!(*order)[i].is_string()) {
@@ -425,8 +454,8 @@ private:
         if (!expectObject(value, pointer))
             return;
         checkKeys(value, pointer, {"position", "target", "up", "fovY"});
-        readVec3(value, pointer, "position", Required::No, camera.position);
-        readVec3(value, pointer, "target", Required::No, camera.target);
+        readPosition(value, pointer, "position", Required::No, camera.position);
+        readPosition(value, pointer, "target", Required::No, camera.target);
         readVec3(value, pointer, "up", Required::No, camera.up);
         double fovY = 0.0;
         if (readNumber(value, pointer, "fovY", fovY)) {

@@ -2,6 +2,9 @@
 
 #include "model/validation/validation_detail.h"
 
+#include "model/io/printable.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -88,6 +91,20 @@ void validateIds(ValidationContext& context)
     auto claim = [&](const std::string& id, const Use& use) {
         if (id.empty()) {
             context.error(std::string("the ") + use.kind + " has an empty id", pointerOf(use) + "/id", idPathOf(use));
+            return;
+        }
+        // Ids are names people read, type and search for; a control character
+        // in one (a pasted escape sequence, a newline) hides or garbles it.
+        const auto control = std::find_if(id.begin(), id.end(), [](char c) {
+            const auto u = static_cast<unsigned char>(c);
+            return u < 0x20 || u == 0x7f;
+        });
+        if (control != id.end()) {
+            char code[16];
+            std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(static_cast<unsigned char>(*control)));
+            context.error(std::string("the ") + use.kind + " id " + detail::quoted(printable(id)) +
+                              " holds a control character (" + code + "); use printable characters",
+                          pointerOf(use) + "/id", idPathOf(use));
             return;
         }
         auto [it, fresh] = seen.try_emplace(id, use);

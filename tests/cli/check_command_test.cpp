@@ -1,7 +1,6 @@
 // `regio-solve` as a user and a script see it: the real executable, its
 // output and its exit status, on the sample scenes, on every broken file of
 // the test data and on hostile input.
-#include "support/broken_file_table.h"
 #include "support/command_run.h"
 #include "support/sample_scenes.h"
 
@@ -9,9 +8,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,35 +171,92 @@ TEST(RegioSolveCheck, ADashReadsStandardInput)
 
 // ---------------------------------------------------------- bad scenes
 
-class CheckBrokenFile : public testing::TestWithParam<regio::test::BrokenFile> { };
+// tests/data/bad/check.tsv: the exact output of `regio-solve check -q FILE`
+// for every file of the bad-file catalogue, and its exit status.
+struct CatalogueFile {
+    std::string name;
+    int exitCode = 0;
+    std::vector<std::string> lines;
+};
 
-TEST_P(CheckBrokenFile, ExitsOneAndSaysWhere)
+void PrintTo(const CatalogueFile& file, std::ostream* out) { *out << file.name; }
+
+std::vector<CatalogueFile> loadCheckTable()
 {
-    const regio::test::BrokenFile& expected = GetParam();
-    const CommandRun run = runRegioSolve({"check", expected.name}, kDataDir / "broken");
-    ASSERT_TRUE(run.exited) << "regio-solve crashed on " << expected.name;
-    EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
-    // FILE[:LINE:COLUMN][: POINTER]: error: MESSAGE
-    std::string location = expected.name;
-    if (expected.line > 0)
-        location += ":" + std::to_string(expected.line) + ":" + std::to_string(expected.column);
-    if (!expected.pointer.empty())
-        location += ": " + expected.pointer;
-    EXPECT_TRUE(hasLineStartingWith(run.out, location + ": error: ", expected.message))
-        << "expected a line starting with \"" << location << ": error: \" and containing \"" << expected.message
-        << "\"; got:\n"
-        << run.out;
-    EXPECT_TRUE(hasLineStartingWith(run.out, expected.name + ": ", " error")) << run.out;
+    std::vector<CatalogueFile> table;
+    std::ifstream in(kDataDir / "bad" / "check.tsv");
+    for (std::string row; std::getline(in, row);) {
+        if (row.empty() || row[0] == '#')
+            continue;
+        const size_t tab1 = row.find('\t');
+        const size_t tab2 = row.find('\t', tab1 + 1);
+        const std::string name = row.substr(0, tab1);
+        if (table.empty() || table.back().name != name)
+            table.push_back({name, std::stoi(row.substr(tab1 + 1, tab2 - tab1 - 1)), {}});
+        const std::string line = row.substr(tab2 + 1);
+        if (line != "-")
+            table.back().lines.push_back(line);
+    }
+    return table;
 }
 
-INSTANTIATE_TEST_SUITE_P(TestData, CheckBrokenFile, testing::ValuesIn(regio::test::loadBrokenFileTable()),
-                         [](const testing::TestParamInfo<regio::test::BrokenFile>& test) {
+class CheckCatalogueFile : public testing::TestWithParam<CatalogueFile> { };
+
+TEST_P(CheckCatalogueFile, PrintsExactlyItsDiagnosticsAndExitsAsItShould)
+{
+    const CatalogueFile& expected = GetParam();
+    const CommandRun run = runRegioSolve({"check", "-q", expected.name}, kDataDir / "bad");
+    ASSERT_TRUE(run.exited) << "regio-solve crashed on " << expected.name;
+    EXPECT_EQ(run.exitCode, expected.exitCode) << run.out << run.err;
+    EXPECT_EQ(linesOf(run.out), expected.lines);
+    EXPECT_EQ(run.err, "");
+}
+
+INSTANTIATE_TEST_SUITE_P(BadFiles, CheckCatalogueFile, testing::ValuesIn(loadCheckTable()),
+                         [](const testing::TestParamInfo<CatalogueFile>& test) {
                              std::string name = test.param.name;
                              for (char& c : name)
                                  if (!std::isalnum(static_cast<unsigned char>(c)))
                                      c = '_';
                              return name;
                          });
+
+TEST(RegioSolveCheck, EveryFileOfTheCatalogueHasItsExpectedOutputAndTheCatalogueCoversEveryKindOfFault)
+{
+    const std::vector<CatalogueFile> table = loadCheckTable();
+    std::set<std::string> listed;
+    for (const CatalogueFile& file : table)
+        listed.insert(file.name);
+    size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(kDataDir / "bad")) {
+        const std::string name = entry.path().filename().string();
+        if (name.ends_with(".tsv"))
+            continue;
+        ++files;
+        EXPECT_TRUE(listed.count(name)) << name << " has no rows in check.tsv";
+    }
+    EXPECT_GE(files, 60u);
+    // Every diagnostic about an element with an id names it beside the
+    // pointer; syntax errors (FILE:LINE:COLUMN) come before any id is known.
+    const std::regex syntaxError(R"(^[^:]+:[0-9]+:[0-9]+: )");
+    for (const CatalogueFile& file : table)
+        for (const std::string& line : file.lines)
+            if (line.find(": /objects/") != std::string::npos && line.find(" (object ") == std::string::npos &&
+                line.find(" (part ") == std::string::npos && line.find(" (face ") == std::string::npos &&
+                !std::regex_search(line, syntaxError))
+                ADD_FAILURE() << "names no object, part or face: " << line;
+}
+
+TEST(RegioSolveCheck, AFileClaimingTwoGigabytesIsRefusedBeforeItIsRead)
+{
+    ScratchDir dir;
+    const fs::path huge = dir.path() / "huge.json";
+    std::ofstream(huge).put('{');
+    fs::resize_file(huge, std::uintmax_t{2} << 30); // sparse: no disk space taken
+    const CommandRun run = runRegioSolve({"check", "-q", huge.string()});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.out.find("huge.json: error: file too large"), std::string::npos) << run.out;
+}
 
 TEST(RegioSolveCheck, AMissingFileOrADirectoryIsUnreadableAndExitsTwo)
 {
@@ -214,7 +273,7 @@ TEST(RegioSolveCheck, AMissingFileOrADirectoryIsUnreadableAndExitsTwo)
 TEST(RegioSolveCheck, TheWorstFileDecidesTheExitStatus)
 {
     const std::string good = (kDataDir / "valid" / "full.json").string();
-    const std::string bad = (kDataDir / "broken" / "newer-version.json").string();
+    const std::string bad = (kDataDir / "bad" / "newer-version.json").string();
     EXPECT_EQ(runRegioSolve({"check", good, good}).exitCode, 0);
     EXPECT_EQ(runRegioSolve({"check", good, bad, good}).exitCode, 1);
     const CommandRun all = runRegioSolve({"check", good, bad, "/nonexistent/scene.json"});
@@ -226,7 +285,7 @@ TEST(RegioSolveCheck, TheWorstFileDecidesTheExitStatus)
 TEST(RegioSolveCheck, QuietLeavesOnlyTheDiagnostics)
 {
     const std::string good = (kDataDir / "valid" / "full.json").string();
-    const std::string bad = (kDataDir / "broken" / "hemicube-odd.json").string();
+    const std::string bad = (kDataDir / "bad" / "hemicube-odd.json").string();
     const CommandRun run = runRegioSolve({"check", "--quiet", good, bad});
     EXPECT_EQ(run.exitCode, 1);
     ASSERT_EQ(linesOf(run.out).size(), 1u) << run.out;

@@ -211,7 +211,7 @@ TEST(SolveCommand, ShowsAProgressLineOnStandardErrorUnlessQuiet)
 TEST(SolveCommand, RefusesToSolveASceneWithValidationErrorsAndExitsOne)
 {
     Scratch scratch;
-    const fs::path bad = kData / "invalid" / "non-convex-face.json";
+    const fs::path bad = kData / "bad" / "non-convex-face.json";
     const CommandRun run = solve({"--iterations", "1", "--report", (scratch / "r.json").string(), bad.string()});
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_NE(run.err.find("not convex"), std::string::npos) << run.err;
@@ -232,7 +232,7 @@ TEST(SolveCommand, AMixOfGoodAndBadScenesSolvesTheGoodOnesAndReportsTheWorstExit
     Scratch scratch;
     const fs::path small = scratch.write("small.json", kSmallScene);
     const CommandRun run = solve({"--iterations", "1", "--quiet", "--report", (scratch / "r.json").string(),
-                                  (kData / "invalid" / "unknown-material.json").string(), small.string()});
+                                  (kData / "bad" / "unknown-material.json").string(), small.string()});
     EXPECT_EQ(run.exitCode, 1);
     const json r = json::parse(readText(scratch / "r.json"));
     ASSERT_EQ(r.size(), 2u);

@@ -1,5 +1,6 @@
 #pragma once
-// The table of tests/data/broken/expected.tsv: for every broken scene file,
+// The tables of the bad-file catalogue, tests/data/bad: format.tsv says for
+// every file the reader refuses
 // which stage rejects it and where the diagnostic must point. Shared by the
 // reader's tests and the CLI's, so both check the same promises.
 #include <fstream>
@@ -11,7 +12,7 @@
 namespace regio::test {
 
 struct BrokenFile {
-    std::string name;  // file name in tests/data/broken
+    std::string name;  // file name in tests/data/bad
     std::string stage; // "format" (parseScene) or "validation" (validateScene)
     int line = 0;      // syntax errors: 1-based position, else 0
     int column = 0;
@@ -22,13 +23,13 @@ struct BrokenFile {
 // Test names print the file, not the bytes of the struct.
 inline void PrintTo(const BrokenFile& file, std::ostream* out) { *out << file.name; }
 
-inline std::string brokenDataDir() { return std::string(REGIO_TEST_DATA) + "/broken"; }
+inline std::string brokenDataDir() { return std::string(REGIO_TEST_DATA) + "/bad"; }
 
 // Location column: "-", "/json/pointer", "LINE:COLUMN" or "LINE:COLUMN /pointer".
 inline std::vector<BrokenFile> loadBrokenFileTable()
 {
     std::vector<BrokenFile> table;
-    std::ifstream in(brokenDataDir() + "/expected.tsv");
+    std::ifstream in(brokenDataDir() + "/format.tsv");
     std::string row;
     while (std::getline(in, row)) {
         if (row.empty() || row[0] == '#')
@@ -54,6 +55,20 @@ inline std::vector<BrokenFile> loadBrokenFileTable()
         table.push_back(std::move(file));
     }
     return table;
+}
+
+// Every file the catalogue lists: format.tsv (what the reader refuses) and
+// validation.tsv (readable scenes that break a rule), first column.
+inline std::vector<std::string> catalogueFileNames()
+{
+    std::vector<std::string> names;
+    for (const char* table : {"/format.tsv", "/validation.tsv"}) {
+        std::ifstream in(brokenDataDir() + table);
+        for (std::string row; std::getline(in, row);)
+            if (!row.empty() && row[0] != '#')
+                names.push_back(row.substr(0, row.find('\t')));
+    }
+    return names;
 }
 
 } // namespace regio::test

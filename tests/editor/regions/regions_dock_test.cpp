@@ -315,6 +315,12 @@ private slots:
         const int row = findDiagnostic(f.diagnostics->model(), QStringLiteral("crate.body"));
         QVERIFY(QString::fromStdString(f.diagnostics->model()->diagnostics()[size_t(row)].message)
                     .contains(QStringLiteral("straddles")));
+        // "Where" names the part by its id before its pointer.
+        const QString where =
+            f.diagnostics->model()
+                ->data(f.diagnostics->model()->index(row, DiagnosticsModel::LocationColumn), Qt::DisplayRole)
+                .toString();
+        QVERIFY2(where.startsWith(QStringLiteral("part crate.body  /objects/")), qPrintable(where));
 
         QTreeView* view = f.diagnostics->view();
         auto* fix = view->findChild<QAction*>(QStringLiteral("ClipPartToRegionsFix"));

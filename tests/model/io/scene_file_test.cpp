@@ -115,7 +115,7 @@ TEST(SceneFileLoad, ADirectoryIsRefused)
 
 TEST(SceneFileLoad, SyntaxErrorsKeepTheirPositionAndNoPathPrefix)
 {
-    const Result<Scene> read = loadSceneFile(std::string(REGIO_TEST_DATA) + "/broken/malformed-json.json");
+    const Result<Scene> read = loadSceneFile(std::string(REGIO_TEST_DATA) + "/bad/malformed-json.json");
     ASSERT_EQ(read.diagnostics().size(), 1u);
     EXPECT_EQ(read.diagnostics()[0].line, 6);
     EXPECT_EQ(read.diagnostics()[0].column, 21);
