@@ -1,5 +1,7 @@
 #include "importer/assimp_reader.h"
 
+#include "model/limits.h"
+
 #include "model/io/file_io.h"
 
 #include <assimp/Importer.hpp>
@@ -13,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -110,6 +113,24 @@ std::optional<std::string> implausibleOffHeader(const std::string& path)
     return "'" + path + "' claims " + std::to_string(static_cast<long long>(vertices)) + " vertices and " +
            std::to_string(static_cast<long long>(faces)) + " faces in a file of " +
            std::to_string(static_cast<long long>(size)) + " bytes";
+}
+
+// A PLY file's header ends at an "end_header" line. Debian's Assimp (5.2)
+// reads a header without one for ever (found by the importer fuzzer: a
+// header of 300 bytes ending "end0"), so such a file is refused first. A
+// header is ASCII text even in binary PLY files, and short.
+std::optional<std::string> unendedPlyHeader(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string header(64 * 1024, '\0');
+    in.read(header.data(), static_cast<std::streamsize>(header.size()));
+    header.resize(static_cast<std::size_t>(in.gcount()));
+    if (!(header.starts_with("ply\n") || header.starts_with("ply\r\n")))
+        return std::nullopt;
+    for (std::size_t at = header.find("end_header"); at != std::string::npos; at = header.find("end_header", at + 1))
+        if (header[at - 1] == '\n')
+            return std::nullopt;
+    return "'" + path + "' is a PLY file whose header never ends (it has no end_header line)";
 }
 
 // What a glTF material says that Debian's Assimp (5.2) does not pass on,
@@ -234,6 +255,8 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
         return model::makeError("'" + path + "' is not a readable file");
     if (const auto claim = implausibleOffHeader(path))
         return model::makeError(*claim);
+    if (const auto unended = unendedPlyHeader(path))
+        return model::makeError(*unended);
     Assimp::Importer importer;
     // Points and lines are split off so that they can be counted and left out.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
@@ -297,8 +320,24 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
             anyMesh = true;
             ++out.counts.meshes;
             const auto base = int(out.soup.positions.size());
-            for (unsigned v = 0; v < mesh.mNumVertices; ++v)
-                out.soup.positions.push_back(frame(visit.transform * mesh.mVertices[v]));
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+                const Vec3 p = frame(visit.transform * mesh.mVertices[v]);
+                // Scenes keep within model::kMaxCoordinate of the origin; a
+                // vertex beyond it (or not a number) is a broken file or
+                // another unit, never geometry to weld.
+                if (!(std::abs(p.x) <= model::kMaxCoordinate && std::abs(p.y) <= model::kMaxCoordinate &&
+                      std::abs(p.z) <= model::kMaxCoordinate)) {
+                    char where[160];
+                    std::snprintf(where, sizeof where, "(%g, %g, %g)", p.x, p.y, p.z);
+                    const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+                    return model::makeError(
+                        "'" + path + "': mesh '" + std::string(mesh.mName.C_Str()) + "' has a vertex at " + where +
+                        (finite ? " m, beyond " + std::to_string(static_cast<long>(model::kMaxCoordinate)) +
+                                      " m from the origin (a model in another unit needs a --scale)"
+                                : ", which is not a point"));
+                }
+                out.soup.positions.push_back(p);
+            }
             // A transform that mirrors (negative determinant) turns the winding.
             const bool mirrored = visit.transform.Determinant() < 0.0f;
             for (unsigned f = 0; mesh.mFaces && f < mesh.mNumFaces; ++f) {

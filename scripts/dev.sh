@@ -5,7 +5,10 @@
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 #
 #   scripts/dev.sh run [SCENE.json] [editor args...]   build, open the editor
-#   scripts/dev.sh test [ctest args...]                 build, run every test
+#   scripts/dev.sh test [ctest args...]                 build, run every test, then
+#                                                       fuzz the reader and the
+#                                                       solver 45 s each
+#                                                       (REGIO_FUZZ_SECONDS)
 #   scripts/dev.sh build                                build only
 #   scripts/dev.sh bench [benchmark args...]            Release build, every benchmark
 set -euo pipefail
@@ -15,7 +18,7 @@ build="${REGIO_BUILD_DIR:-$root/build}"
 
 # Everything Regio needs, from Debian 12's archive only.
 packages=(
-  g++ cmake ninja-build pkg-config dpkg-dev
+  g++ cmake ninja-build pkg-config dpkg-dev clang libclang-rt-14-dev
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
   qt6-charts-dev
   libglm-dev nlohmann-json3-dev libstb-dev libpng-dev libssl-dev libassimp-dev assimp-testmodels
@@ -71,7 +74,16 @@ case "$command" in
     # committed lockfile pins.
     gltf="$root/tests/output/gltf"
     [ -d "$gltf/node_modules/gltf-validator" ] || npm ci --prefix "$gltf" --no-audit --no-fund
-    exec ctest --test-dir "$build" --output-on-failure -j2 "$@"
+    ctest --test-dir "$build" --output-on-failure -j2 "$@"
+    # Then the fuzz harnesses of Regio's own code for a while (clang, ASan +
+    # UBSan; build-fuzz/), unless ctest was asked for a part only or
+    # REGIO_FUZZ_SECONDS=0. The importer's harness also reaches Assimp, which
+    # still aborts on some broken files (docs/reliability.md): run it with
+    # scripts/fuzz.sh SECONDS importer_fuzzer.
+    seconds=${REGIO_FUZZ_SECONDS:-45}
+    if [ $# -eq 0 ] && [ "$seconds" -gt 0 ]; then
+      "$root/scripts/fuzz.sh" "$seconds" scene_reader_fuzzer prepare_fuzzer
+    fi
     ;;
   build)
     install_missing

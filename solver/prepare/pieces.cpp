@@ -422,25 +422,38 @@ void PieceBuilder::collectContacts(int face, int a, int b, std::vector<int>& int
     const double length2 = glm::dot(d, d);
     if (length2 <= 0.0 || m_outlineCells.empty())
         return;
+    const auto consider = [&](const std::vector<int>& vertices) {
+        for (int v : vertices) {
+            if (m_outlineFace[size_t(v)] == face || v == a || v == b)
+                continue;
+            const Vec3 r = vertex(v) - pa;
+            const double t = glm::dot(r, d) / length2;
+            if (t * t * length2 <= kContactDistance * kContactDistance ||
+                (1.0 - t) * (1.0 - t) * length2 <= kContactDistance * kContactDistance || t <= 0.0 || t >= 1.0)
+                continue;
+            if (glm::length(r - d * t) <= kContactDistance)
+                into.push_back(v);
+        }
+    };
     const Vec3 lo = glm::min(pa, vertex(b)), hi = glm::max(pa, vertex(b));
-    for (std::int64_t x = cellIndex(lo.x - kContactDistance); x <= cellIndex(hi.x + kContactDistance); ++x)
-        for (std::int64_t y = cellIndex(lo.y - kContactDistance); y <= cellIndex(hi.y + kContactDistance); ++y)
-            for (std::int64_t z = cellIndex(lo.z - kContactDistance); z <= cellIndex(hi.z + kContactDistance); ++z) {
-                const auto it = m_outlineCells.find({-1, x, y, z});
-                if (it == m_outlineCells.end())
-                    continue;
-                for (int v : it->second) {
-                    if (m_outlineFace[size_t(v)] == face || v == a || v == b)
-                        continue;
-                    const Vec3 r = vertex(v) - pa;
-                    const double t = glm::dot(r, d) / length2;
-                    if (t * t * length2 <= kContactDistance * kContactDistance ||
-                        (1.0 - t) * (1.0 - t) * length2 <= kContactDistance * kContactDistance || t <= 0.0 || t >= 1.0)
-                        continue;
-                    if (glm::length(r - d * t) <= kContactDistance)
-                        into.push_back(v);
-                }
-            }
+    const std::int64_t x0 = cellIndex(lo.x - kContactDistance), x1 = cellIndex(hi.x + kContactDistance);
+    const std::int64_t y0 = cellIndex(lo.y - kContactDistance), y1 = cellIndex(hi.y + kContactDistance);
+    const std::int64_t z0 = cellIndex(lo.z - kContactDistance), z1 = cellIndex(hi.z + kContactDistance);
+    // A long diagonal edge of a large scene spans more cells than there are
+    // outline cells at all (a 4 km edge: 10^8 of them): then reading every
+    // outline cell is the cheaper walk, and it is the same answer.
+    const double cells = double(x1 - x0 + 1) * double(y1 - y0 + 1) * double(z1 - z0 + 1);
+    if (cells >= double(m_outlineCells.size())) {
+        for (const auto& [cell, vertices] : m_outlineCells)
+            if (cell.x >= x0 && cell.x <= x1 && cell.y >= y0 && cell.y <= y1 && cell.z >= z0 && cell.z <= z1)
+                consider(vertices);
+        return;
+    }
+    for (std::int64_t x = x0; x <= x1; ++x)
+        for (std::int64_t y = y0; y <= y1; ++y)
+            for (std::int64_t z = z0; z <= z1; ++z)
+                if (const auto it = m_outlineCells.find({-1, x, y, z}); it != m_outlineCells.end())
+                    consider(it->second);
 }
 
 // A region's BSP planes end at its cell: an element cut by one has a
@@ -470,8 +483,12 @@ void PieceBuilder::insertEdgePoints(Work& piece)
             continue;
         ++grownEdges;
         const Vec3 pa = vertex(a), d = vertex(b) - pa;
-        std::sort(inner.begin(), inner.end(),
-                  [&](int x, int y) { return glm::dot(vertex(x) - pa, d) < glm::dot(vertex(y) - pa, d); });
+        // By position along the edge, then by id: the same loop whatever
+        // order the points were collected in.
+        std::sort(inner.begin(), inner.end(), [&](int x, int y) {
+            const double tx = glm::dot(vertex(x) - pa, d), ty = glm::dot(vertex(y) - pa, d);
+            return tx < ty || (tx == ty && x < y);
+        });
         // One point per position: where two walls meet the floor, both
         // bring a corner to the same place.
         inner.erase(

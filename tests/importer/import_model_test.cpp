@@ -193,6 +193,42 @@ TEST(ImportModel, WhatCannotBeReadIsRefusedWithTheReason)
     EXPECT_FALSE(lines.diagnostics().empty());
 }
 
+TEST(ImportModel, AVertexAtInfinityOrBeyondTheCoordinateLimitIsRefusedNotWelded)
+{
+    // Found by the importer fuzzer: glTF's BoxWithInfinites (assimp-testmodels)
+    // has infinite coordinates, which the welding grid turned into integers.
+    const fs::path infinites = "/usr/share/assimp/models/glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb";
+    if (fs::exists(infinites)) {
+        auto read = importer::importModel(infinites.string());
+        ASSERT_FALSE(read);
+        EXPECT_NE(read.diagnostics().front().message.find("which is not a point"), std::string::npos)
+            << read.diagnostics().front().message;
+    }
+    Scratch s;
+    auto far = importer::importModel(s.write("far.obj", "v 0 0 0\nv 1 0 0\nv 0 0 3e6\nf 1 2 3\n"));
+    ASSERT_FALSE(far);
+    EXPECT_NE(far.diagnostics().front().message.find("beyond 1000000 m from the origin"), std::string::npos)
+        << far.diagnostics().front().message;
+    // In millimetres it is a 3 km triangle, which is fine.
+    importer::ImportOptions millimetres;
+    millimetres.read.scale = 0.001;
+    EXPECT_TRUE(importer::importModel(s.write("near.obj", "v 0 0 0\nv 3e6 0 0\nv 0 0 3e6\nf 1 2 3\n"), millimetres));
+}
+
+TEST(ImportModel, APlyHeaderWithoutItsEndIsRefusedInsteadOfReadForEver)
+{
+    // Found by the importer fuzzer: Assimp reads such a header for ever.
+    Scratch s;
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_index\n";
+    const std::string body = "0 0 0\n1 0 0\n0 0 1\n3 0 1 2\n";
+    auto unended = importer::importModel(s.write("unended.ply", header + "end0\n" + body));
+    ASSERT_FALSE(unended);
+    EXPECT_NE(unended.diagnostics().front().message.find("no end_header line"), std::string::npos);
+    EXPECT_TRUE(importer::importModel(s.write("ended.ply", header + "end_header\n" + body)));
+}
+
 TEST(ImportModel, EveryModelOfAssimpsTestModelsImportsValidOrIsRefusedWithAReason)
 {
     // Debian's assimp-testmodels: hundreds of files in every format Assimp
