@@ -84,14 +84,7 @@ public:
             const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             ::dup2(err, STDERR_FILENO);
             ::close(fds[0]);
-            std::vector<std::string> all{REGIO_SOLVE_EXE};
-            all.insert(all.end(), args.begin(), args.end());
-            std::vector<char*> argv;
-            for (std::string& a : all)
-                argv.push_back(a.data());
-            argv.push_back(nullptr);
-            ::execv(argv[0], argv.data());
-            ::_exit(127);
+            execRegioSolve(args);
         }
         ::close(fds[1]);
         m_out = ::fdopen(fds[0], "r");

@@ -36,16 +36,9 @@ bool runAndKill(const std::vector<std::string>& args, std::chrono::microseconds 
 {
     const pid_t pid = ::fork();
     if (pid == 0) {
-        std::vector<std::string> all{REGIO_SOLVE_EXE};
-        all.insert(all.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (std::string& a : all)
-            argv.push_back(a.data());
-        argv.push_back(nullptr);
         std::freopen("/dev/null", "w", stdout);
         std::freopen("/dev/null", "w", stderr);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
+        execRegioSolve(args);
     }
     std::this_thread::sleep_for(delay);
     const bool running = ::kill(pid, SIGKILL) == 0;

@@ -67,6 +67,19 @@ private:
     fs::path m_path;
 };
 
+// In a forked child: replaces it with regio-solve ARGS (127 if that fails).
+[[noreturn]] inline void execRegioSolve(const std::vector<std::string>& args)
+{
+    std::vector<std::string> all{REGIO_SOLVE_EXE};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : all)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+}
+
 // Runs regio-solve with `args` from `workDir`, standard input from `stdinFile`.
 inline CommandRun runRegioSolve(const std::vector<std::string>& args, const fs::path& workDir = {},
                                 const fs::path& stdinFile = "/dev/null")
