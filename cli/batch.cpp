@@ -112,7 +112,8 @@ private:
 
     // Temporary files a killed run of this scene left beside its outputs
     // (NAME.glb.tmp-XXXXXX). Only this scene's, which no other process of a
-    // batch into the same directory is writing now.
+    // batch into the same directory is writing now (a Slurm array gives
+    // each scene one task).
     void removeLeftovers(const SceneJob& job) const
     {
         std::error_code ec;
@@ -164,6 +165,8 @@ void Batch::solveOne(int index, SceneJob& job)
     // report records the older content and the next run solves it again.
     const model::Result<std::string> bytes = model::readFile(job.file);
     const std::string sha256 = bytes ? sha256Hex(*bytes) : std::string();
+    // Whatever a killed run of this scene left, also when it is skipped now.
+    removeLeftovers(job);
     if (bytes && !m_options.force) {
         if (std::optional<nlohmann::json> report = solvedBefore(job, sha256)) {
             job.outcome = Outcome::Skipped;
@@ -195,7 +198,6 @@ void Batch::solveOne(int index, SceneJob& job)
         return;
     }
 
-    removeLeftovers(job);
     solver::SolverOptions solverOptions = m_options.solver;
     model::Result<std::unique_ptr<solver::Solver>> built = solver::Solver::create(*input.scene, solverOptions);
     for (const model::Diagnostic& d : built.diagnostics())
