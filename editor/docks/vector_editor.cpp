@@ -23,19 +23,25 @@ VectorEditor::VectorEditor(QWidget* parent, double min, double max, int decimals
         box->setToolTip(QString::fromLatin1(axes[i]));
         box->setAccessibleName(QString::fromLatin1(axes[i]));
         box->setMinimumWidth(60);
-        connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
-            if (!m_setting)
-                emit valueEdited(value());
+        // Only the component the user changed: the boxes show the others
+        // rounded to their decimals (a reflectance of 0.7312 reads 0.731),
+        // and the edit must not change values nobody touched.
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this, i](double component) {
+            if (m_setting)
+                return;
+            m_value[i] = component;
+            emit valueEdited(m_value);
         });
         layout->addWidget(box);
         m_boxes[i] = box;
     }
 }
 
-model::Vec3 VectorEditor::value() const { return {m_boxes[0]->value(), m_boxes[1]->value(), m_boxes[2]->value()}; }
+model::Vec3 VectorEditor::value() const { return m_value; }
 
 void VectorEditor::setValue(const model::Vec3& value)
 {
+    m_value = value;
     m_setting = true;
     for (int i = 0; i < 3; ++i)
         m_boxes[i]->setValue(value[i]);

@@ -23,6 +23,7 @@ signals:
 
 private:
     QDoubleSpinBox* m_boxes[3];
+    model::Vec3 m_value{0.0}; // exact, as last set or edited; the boxes show it rounded
     bool m_setting = false;
 };
 

@@ -244,18 +244,33 @@ void SolverDock::edited()
 {
     if (m_refreshing)
         return;
+    // Only the value the user changed. The widgets show the others rounded to
+    // their decimals or clamped to their ranges (a patch size of 0.1234 m reads
+    // 0.123): taking them all would change values nobody touched.
     model::SolverSettings s = m_document->scene().solver;
-    s.hemicube = m_hemicube->value() + (m_hemicube->value() % 2); // even: the sides are N x N/2
-    s.patchSize = m_patchSize->value();
-    s.elementsPerPatch = m_elementsPerPatch->value();
-    s.adaptive.enabled = m_adaptive->isChecked();
-    s.adaptive.threshold = m_threshold->value();
-    s.adaptive.minEdge = m_minEdge->value();
-    s.adaptive.anchoring = m_anchoring->isChecked();
-    s.maxIterations = m_maxIterations->value();
-    s.convergence = m_convergence->value();
-    s.visibility = model::Visibility(m_visibility->currentData().toInt());
-    s.regions = model::RegionsMode(m_regions->currentData().toInt());
+    const QObject* from = sender();
+    if (from == m_hemicube)
+        s.hemicube = m_hemicube->value() + (m_hemicube->value() % 2); // even: the sides are N x N/2
+    else if (from == m_patchSize)
+        s.patchSize = m_patchSize->value();
+    else if (from == m_elementsPerPatch)
+        s.elementsPerPatch = m_elementsPerPatch->value();
+    else if (from == m_adaptive)
+        s.adaptive.enabled = m_adaptive->isChecked();
+    else if (from == m_threshold)
+        s.adaptive.threshold = m_threshold->value();
+    else if (from == m_minEdge)
+        s.adaptive.minEdge = m_minEdge->value();
+    else if (from == m_anchoring)
+        s.adaptive.anchoring = m_anchoring->isChecked();
+    else if (from == m_maxIterations)
+        s.maxIterations = m_maxIterations->value();
+    else if (from == m_convergence)
+        s.convergence = m_convergence->value();
+    else if (from == m_visibility)
+        s.visibility = model::Visibility(m_visibility->currentData().toInt());
+    else if (from == m_regions)
+        s.regions = model::RegionsMode(m_regions->currentData().toInt());
     applySettings(s);
 }
 

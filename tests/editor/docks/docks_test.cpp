@@ -241,6 +241,20 @@ private slots:
         QCOMPARE(materials->reflectanceEditor()->value(), model::Rgb(0.6, 0.1, 0.1));
     }
 
+    void editingOneChannelLeavesTheOthersExactlyAsTheSceneHasThem()
+    {
+        // Channels with more decimals than the editor shows (three).
+        model::Scene scene = test::smallScene();
+        scene.findMaterial("red")->reflectance = model::Rgb(0.61234, 0.11111, 0.09876);
+        auto window = makeWindow(scene);
+        MaterialsDock* materials = dock<MaterialsDock>(window.get());
+        materials->list()->setCurrentRow(1);
+        materials->reflectanceEditor()->spinBox(1)->setValue(0.35);
+        QCOMPARE(window->document()->scene().findMaterial("red")->reflectance, model::Rgb(0.61234, 0.35, 0.09876));
+        window->document()->undoStack()->undo();
+        QVERIFY(window->document()->scene() == scene);
+    }
+
     void theMaterialsDockKeepsItsCurrentMaterialAcrossEdits()
     {
         auto window = makeWindow(test::smallScene());

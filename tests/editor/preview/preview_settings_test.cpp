@@ -154,6 +154,29 @@ private slots:
         QCOMPARE(document.scene().solver.hemicube, 152);
     }
 
+    void changingOneControlLeavesTheValuesTheOthersShowRoundedExactlyAsTheSceneHasThem()
+    {
+        // Values from a file or a sweep that the controls can only show
+        // rounded (3 decimals of patch size, 6 of convergence) or clamped.
+        model::Scene scene = test::loadSample("cornell-box");
+        scene.solver.patchSize = 0.12345;
+        scene.solver.convergence = 0.000123456;
+        scene.solver.adaptive.minEdge = 0.00005; // below the control's minimum
+        scene.solver.adaptive.threshold = 0.04567;
+        SceneDocument document;
+        test::resetDocument(document, scene);
+        QObject owner;
+        SolverDock dock(&document, dummyActions(&owner));
+        dock.findChild<QSpinBox*>("hemicube")->setValue(240);
+        model::SolverSettings expected = scene.solver;
+        expected.hemicube = 240;
+        QVERIFY(document.scene().solver == expected);
+        // And one undo gives back exactly the scene as it was.
+        document.undoStack()->undo();
+        QVERIFY(document.scene() == scene);
+        QCOMPARE(document.undoStack()->count(), 1);
+    }
+
     void settingsSurviveSaveAndLoad()
     {
         SceneDocument document;
