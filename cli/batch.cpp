@@ -161,8 +161,7 @@ void Batch::solveOne(int index, SceneJob& job)
     };
     m_progress.started(index, job.name, job.file);
 
-    // Hash the bytes first: should the file change while it is read, the
-    // report records the older content and the next run solves it again.
+    // One read: the bytes hashed are the bytes solved.
     const model::Result<std::string> bytes = model::readFile(job.file);
     const std::string sha256 = bytes ? sha256Hex(*bytes) : std::string();
     // Whatever a killed run of this scene left, also when it is skipped now.
@@ -178,7 +177,7 @@ void Batch::solveOne(int index, SceneJob& job)
     }
 
     m_progress.phase(job.name, "prepare");
-    const SceneInput input = readSceneInput(job.file);
+    const SceneInput input = bytes ? sceneInputFromText(job.file, *bytes) : readSceneInput(job.file);
     {
         std::ostringstream diagnostics;
         printDiagnostics(diagnostics, input);

@@ -1,5 +1,6 @@
 #include "model/diagnostic_subject.h"
 
+#include "model/io/json_pointer.h"
 #include "model/io/printable.h"
 
 #include <array>
@@ -28,13 +29,7 @@ std::optional<DiagnosticSubject> subjectOf(const Diagnostic& diagnostic)
     // The kinds of the "/collection/index" pairs of the pointer, outside in,
     // each with its id in idPath: the innermost one whose id is known (a face
     // whose id is not a string is reported as its part).
-    std::vector<std::string> tokens;
-    for (std::size_t start = 1; start <= diagnostic.pointer.size();) {
-        const std::size_t slash = diagnostic.pointer.find('/', start);
-        const std::size_t end = slash == std::string::npos ? diagnostic.pointer.size() : slash;
-        tokens.push_back(diagnostic.pointer.substr(start, end - start));
-        start = end + 1;
-    }
+    const std::vector<std::string> tokens = pointerTokens(diagnostic.pointer);
     std::vector<std::string_view> kinds;
     for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
         const std::string& index = tokens[i + 1];

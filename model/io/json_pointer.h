@@ -7,8 +7,12 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace regio::model {
+
+// The tokens of a pointer, "~1" and "~0" unescaped ("/a~1b/0" -> "a/b", "0").
+std::vector<std::string> pointerTokens(std::string_view pointer);
 
 // Appends "/" + token, escaping "~" and "/".
 std::string appendPointer(const std::string& pointer, std::string_view token);

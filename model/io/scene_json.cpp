@@ -388,13 +388,9 @@ void nameElements(const nlohmann::json& document, Diagnostics& diagnostics)
             continue;
         const nlohmann::json* node = &document;
         std::string previous;
-        for (std::size_t start = 1; start <= d.pointer.size() && node;) {
-            const std::size_t slash = d.pointer.find('/', start);
-            const std::size_t end = slash == std::string::npos ? d.pointer.size() : slash;
-            std::string token = d.pointer.substr(start, end - start);
-            start = end + 1;
-            for (std::size_t at = 0; (at = token.find('~', at)) != std::string::npos; ++at)
-                token.replace(at, 2, token.compare(at, 2, "~1") == 0 ? "/" : "~");
+        for (const std::string& token : pointerTokens(d.pointer)) {
+            if (!node)
+                break;
             if (node->is_object()) {
                 const auto it = node->find(token);
                 node = it == node->end() ? nullptr : &*it;
