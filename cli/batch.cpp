@@ -69,8 +69,26 @@ private:
             const std::size_t index = m_next.fetch_add(1);
             if (index >= m_jobs.size())
                 return;
-            solveOne(static_cast<int>(index), m_jobs[index]);
+            solveGuarded(static_cast<int>(index), m_jobs[index]);
         }
+    }
+
+    // One scene that runs out of memory (past the estimate that let it
+    // start) or meets a fault of the solver fails alone; the batch goes on.
+    void solveGuarded(int index, SceneJob& job)
+    {
+        std::string error;
+        try {
+            solveOne(index, job);
+            return;
+        } catch (const std::bad_alloc&) {
+            error = "out of memory (try a larger patch size, a lower hemicube resolution or fewer --jobs)";
+        } catch (const std::exception& e) {
+            error = std::string("the solver failed: ") + e.what();
+        }
+        fail(job, kExitFailure, error);
+        m_progress.finished(index, job.name, "failed", "not solved: " + model::printable(job.error),
+                            {{"error", job.error}});
     }
 
     fs::path reportPath(const SceneJob& job) const { return m_dir / (job.name + ".report.json"); }

@@ -32,7 +32,30 @@ const char* const kUsage =
 
 } // namespace
 
+namespace {
+
+int dispatch(int argc, char** argv);
+
+} // namespace
+
+// What escapes a command (memory exhausted past the estimate that let a
+// solve start, a fault of the solver's own) ends it with a message and
+// status 2, never with std::terminate's abort and a core file.
 int main(int argc, char** argv)
+{
+    try {
+        return dispatch(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "regio-solve: out of memory (try a larger patch size or a lower hemicube resolution)\n";
+    } catch (const std::exception& e) {
+        std::cerr << "regio-solve: " << e.what() << "\n";
+    }
+    return regio::cli::kExitFailure;
+}
+
+namespace {
+
+int dispatch(int argc, char** argv)
 {
     using namespace regio::cli;
     if (argc < 2) {
@@ -63,3 +86,5 @@ int main(int argc, char** argv)
               << "Try 'regio-solve --help'.\n";
     return kExitFailure;
 }
+
+} // namespace

@@ -1,5 +1,7 @@
 #include "importer/assimp_reader.h"
 
+#include "importer/polygon_triangulation.h"
+
 #include "model/limits.h"
 
 #include "model/io/file_io.h"
@@ -258,10 +260,11 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
     if (const auto unended = unendedPlyHeader(path))
         return model::makeError(*unended);
     Assimp::Importer importer;
-    // Points and lines are split off so that they can be counted and left out.
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
-    const aiScene* scene =
-        importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
+    // No post-processing beyond the check of Assimp's own output: its
+    // triangulation step aborts the process on some broken files (a failed
+    // assertion), so polygons are triangulated here (triangulatePolygon),
+    // and points and lines are counted and left out face by face.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
     if (scene == nullptr)
         return model::makeError("'" + path + "' could not be read: " + importer.GetErrorString());
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0)
@@ -340,22 +343,29 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
             }
             // A transform that mirrors (negative determinant) turns the winding.
             const bool mirrored = visit.transform.Determinant() < 0.0f;
+            std::vector<Vec3> polygon;
             for (unsigned f = 0; mesh.mFaces && f < mesh.mNumFaces; ++f) {
                 const aiFace& face = mesh.mFaces[f];
-                if (face.mNumIndices != 3 || face.mIndices == nullptr) {
+                if (face.mNumIndices < 3 || face.mIndices == nullptr) {
                     ++out.counts.pointsAndLines;
                     continue;
                 }
-                if (face.mIndices[0] >= mesh.mNumVertices || face.mIndices[1] >= mesh.mNumVertices ||
-                    face.mIndices[2] >= mesh.mNumVertices)
-                    return model::makeError("'" + path + "': mesh '" + std::string(mesh.mName.C_Str()) +
-                                            "' has a face with a vertex index out of range");
-                SoupTriangle t;
-                t.corners = {base + int(face.mIndices[0]), base + int(face.mIndices[mirrored ? 2 : 1]),
-                             base + int(face.mIndices[mirrored ? 1 : 2])};
-                t.material = mesh.mMaterialIndex < out.soup.materials.size() ? int(mesh.mMaterialIndex) : 0;
-                t.mesh = meshIndex;
-                out.soup.triangles.push_back(t);
+                polygon.clear();
+                for (unsigned i = 0; i < face.mNumIndices; ++i) {
+                    if (face.mIndices[i] >= mesh.mNumVertices)
+                        return model::makeError("'" + path + "': mesh '" + std::string(mesh.mName.C_Str()) +
+                                                "' has a face with a vertex index out of range");
+                    polygon.push_back(out.soup.positions[std::size_t(base) + face.mIndices[i]]);
+                }
+                for (const auto& corner : triangulatePolygon(polygon)) {
+                    SoupTriangle t;
+                    t.corners = {base + int(face.mIndices[corner[0]]),
+                                 base + int(face.mIndices[corner[mirrored ? 2 : 1]]),
+                                 base + int(face.mIndices[corner[mirrored ? 1 : 2]])};
+                    t.material = mesh.mMaterialIndex < out.soup.materials.size() ? int(mesh.mMaterialIndex) : 0;
+                    t.mesh = meshIndex;
+                    out.soup.triangles.push_back(t);
+                }
             }
         }
         if (anyMesh)

@@ -1,5 +1,7 @@
 #include "solver/solver.h"
 
+#include "solver/resource_estimate.h"
+
 #include <chrono>
 #include <cmath>
 
@@ -53,6 +55,12 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     const model::SolverSettings s = resolveSettings(scene.solver, options);
     if (model::Check runnable = checkRunnable(s); !runnable)
         return runnable.error();
+    // Refused before preparation, which is where a mesh too fine for the
+    // machine would take its memory.
+    const ResourceEstimate estimate =
+        estimateResources(scene, s, options.threads, std::uint64_t(options.formFactorCacheBytes));
+    if (model::Check fits = checkResources(estimate, availableMemoryBytes()); !fits)
+        return fits.error();
 
     model::Result<PreparedScene> prepared = prepareScene(scene, prepareOptionsFor(s, options.autoRegionPatchThreshold));
     if (!prepared)

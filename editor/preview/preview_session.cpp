@@ -4,6 +4,8 @@
 #include "solver/shooting/shooting.h"
 #include "solver/visibility/hemicube_view.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 
 namespace regio::editor {
@@ -24,7 +26,7 @@ PreviewSession::PreviewSession(Config config, Notify notify)
 {
     m_paused = m_config.startPaused;
     ++s_live;
-    m_thread = std::thread([this] { work(); });
+    m_thread = std::thread([this] { guardedWork(); });
 }
 
 PreviewSession::~PreviewSession()
@@ -211,6 +213,38 @@ void PreviewSession::serveHemicube()
     m_notify(SessionEvent::Hemicube);
 }
 
+void PreviewSession::guardedWork()
+{
+    // An exception that leaves a thread ends the process: the editor, its
+    // document and hours of work with it. Whatever escapes the solver ends
+    // this session instead; the document is the UI thread's and untouched.
+    try {
+        work();
+    } catch (const std::bad_alloc&) {
+        fail(QCoreApplication::translate("regio::editor::PreviewSession",
+                                         "the solver ran out of memory (try a larger patch size or a lower "
+                                         "hemicube resolution)")
+                 .toStdString());
+    } catch (const std::exception& e) {
+        fail(QCoreApplication::translate("regio::editor::PreviewSession", "the solver failed: %1")
+                 .arg(QString::fromLocal8Bit(e.what()))
+                 .toStdString());
+    } catch (...) {
+        fail(QCoreApplication::translate("regio::editor::PreviewSession", "the solver failed").toStdString());
+    }
+}
+
+void PreviewSession::fail(const std::string& message)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_diagnostics.push_back(model::makeError(message));
+        m_done = true;
+    }
+    m_exited.store(true);
+    m_notify(SessionEvent::Failed);
+}
+
 void PreviewSession::work()
 {
     model::Result<std::unique_ptr<solver::Solver>> built = solver::Solver::create(m_config.scene, m_config.options);
@@ -231,6 +265,8 @@ void PreviewSession::work()
     const auto interval = std::chrono::milliseconds(m_config.publishIntervalMs);
     const auto progress = [&](const solver::SolverStats& stats) {
         record(stats);
+        if (m_config.afterShot)
+            m_config.afterShot(stats);
         serveHemicube();
         // A refinement round (§5.7) reports no progress and may take a few
         // hundred ms on a large mesh: when one may follow this shot, the

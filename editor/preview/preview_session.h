@@ -65,6 +65,10 @@ public:
         solver::SolverOptions options;
         int publishIntervalMs = 100; // frames while shooting: ten a second
         bool startPaused = false;
+        // Called on the worker after every shot. Tests throw from it to see
+        // the worker survive what may escape a solver (std::bad_alloc and the
+        // like): the session fails with the reason and the editor goes on.
+        std::function<void(const solver::SolverStats&)> afterShot;
     };
     using Notify = std::function<void(SessionEvent)>;
 
@@ -101,7 +105,10 @@ public:
     std::optional<HemicubeImages> takeHemicube();
 
 private:
+    // The worker: work() with whatever escapes it turned into a failure.
+    void guardedWork();
     void work();
+    void fail(const std::string& message);
     void publish(bool running);
     void serveHemicube();
     // Whether a refinement round may run before the next shot (worker thread).

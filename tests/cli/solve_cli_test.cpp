@@ -220,6 +220,41 @@ TEST(SolveCommand, RefusesToSolveASceneWithValidationErrorsAndExitsOne)
     EXPECT_FALSE(r.contains("faces"));
 }
 
+TEST(SolveCommand, ASceneTooBigForTheMachineIsRefusedBeforeItIsPreparedAndExitsOne)
+{
+    Scratch scratch;
+    json scene = json::parse(readText(samplePath("cornell-box")));
+    scene["solver"]["patchSize"] = 0.0005; // half a millimetre: half a billion elements
+    const fs::path file = scratch.write("too-fine.json", scene.dump());
+    const CommandRun run = solve({"--report", (scratch / "r.json").string(), file.string()});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("/solver/patchSize: error: the mesh would have about 569 million elements, beyond the "
+                           "limit of 20 million: raise the patch size"),
+              std::string::npos)
+        << run.err;
+    const json r = json::parse(readText(scratch / "r.json"));
+    EXPECT_NE(r["status"], "solved");
+    EXPECT_FALSE(r.contains("faces"));
+}
+
+TEST(SolveCommand, ASceneNeedingMoreMemoryThanTheProcessMayTakeIsRefusedWithBothFigures)
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "a sanitizer's shadow memory does not fit under an address-space limit";
+#endif
+    Scratch scratch;
+    json scene = json::parse(readText(samplePath("cornell-box")));
+    scene["solver"]["patchSize"] = 0.004; // 9 million elements once refined: some 18 GB
+    const fs::path file = scratch.write("fine.json", scene.dump());
+    // 2 GB of address space for the process, as `ulimit -v` or a batch
+    // system's memory limit would allow it.
+    const CommandRun run = runRegioSolve({"solve", "--quiet", file.string()}, {}, "/dev/null", "ulimit -v 2000000");
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_NE(run.err.find("/solver/patchSize: error: the solve would need about "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(" GB of memory (8.89 million elements), more than the 2.0 GB available"), std::string::npos)
+        << run.err;
+}
+
 TEST(SolveCommand, AnUnreadableFileExitsTwo)
 {
     const CommandRun run = solve({"/nonexistent/scene.json"});

@@ -80,12 +80,13 @@ private:
     ::_exit(127);
 }
 
-// Runs regio-solve with `args` from `workDir`, standard input from `stdinFile`.
+// Runs regio-solve with `args` from `workDir`, standard input from
+// `stdinFile`, after the shell commands `shellPrefix` (e.g. "ulimit -v N").
 inline CommandRun runRegioSolve(const std::vector<std::string>& args, const fs::path& workDir = {},
-                                const fs::path& stdinFile = "/dev/null")
+                                const fs::path& stdinFile = "/dev/null", const std::string& shellPrefix = {})
 {
     ScratchDir scratch;
-    std::string command;
+    std::string command = shellPrefix.empty() ? std::string() : shellPrefix + " && ";
     if (!workDir.empty())
         command += "cd " + shellQuoted(workDir.string()) + " && ";
     command += shellQuoted(REGIO_SOLVE_EXE);

@@ -13,6 +13,7 @@
 #include "editor/preview/preview_runner.h"
 #include "editor/preview/solver_presets.h"
 #include "editor/viewport/viewport.h"
+#include "model/io/scene_json.h"
 #include "preview_scenes.h"
 #include "support/command_run.h"
 #include "support/editor_documents.h"
@@ -228,6 +229,68 @@ private slots:
         QVERIFY(waitForState(runner, PreviewState::Failed, 30000));
         QCOMPARE(failed.count(), 1);
         QVERIFY(!failed.first().first().toString().isEmpty());
+    }
+
+    // What escapes a solver on the worker thread (running out of memory, a
+    // fault of the solver's own) ends the session with the reason; before,
+    // it ended the editor. The frames shown so far stay.
+    void whatEscapesTheSolverFailsTheSessionNotTheEditor_data()
+    {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("out of memory") << 0 << QStringLiteral("the solver ran out of memory");
+        QTest::newRow("an exception") << 1 << QStringLiteral("the solver failed: an invariant broke");
+        QTest::newRow("anything else") << 2 << QStringLiteral("the solver failed");
+    }
+    void whatEscapesTheSolverFailsTheSessionNotTheEditor()
+    {
+        QFETCH(int, kind);
+        QFETCH(QString, expected);
+        PreviewSession::Config config;
+        config.scene = draftSample("cornell-box");
+        config.publishIntervalMs = 0;
+        config.afterShot = [kind](const solver::SolverStats& stats) {
+            if (stats.iterations < 5)
+                return;
+            if (kind == 0)
+                throw std::bad_alloc();
+            if (kind == 1)
+                throw std::logic_error("an invariant broke");
+            throw 42;
+        };
+        std::atomic<int> failures{0};
+        PreviewSession session(std::move(config), [&](SessionEvent event) {
+            if (event == SessionEvent::Failed)
+                ++failures;
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(session.exited(), 30000);
+        QCOMPARE(failures.load(), 1);
+        const model::Diagnostics diagnostics = session.diagnostics();
+        QVERIFY(!diagnostics.empty());
+        QVERIFY(diagnostics.back().isError());
+        QVERIFY2(QString::fromStdString(diagnostics.back().message).startsWith(expected),
+                 diagnostics.back().message.c_str());
+        QVERIFY2(session.latestFrame() != nullptr, "the frames before the failure stay");
+    }
+
+    void aFailedSolveLeavesTheDocumentAsItWasAndTheWindowSolvingAgain()
+    {
+        auto window = makeWindow();
+        window->document()->reset(draftSample("cornell-box"));
+        const std::string before = model::serializeScene(window->document()->scene());
+        model::Scene scene = window->document()->scene();
+        scene.solver.patchSize = 0.0005; // refused: half a billion elements
+        PreviewRunner* runner = window->preview()->runner();
+        QSignalSpy failed(runner, &PreviewRunner::failed);
+        runner->start(scene);
+        QVERIFY(waitForState(*runner, PreviewState::Failed, 30000));
+        QCOMPARE(failed.count(), 1);
+        QVERIFY2(failed.first().first().toString().contains(QStringLiteral("20 million")),
+                 qPrintable(failed.first().first().toString()));
+        QVERIFY(model::serializeScene(window->document()->scene()) == before);
+        QVERIFY(!window->document()->isModified());
+        window->preview()->run();
+        QVERIFY(waitForFinal(*runner, 60000));
     }
 
     void theViewportGetsTheSolutionAndMeshLayersWhileSolving()
