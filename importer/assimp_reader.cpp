@@ -265,8 +265,15 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
     // assertion), so polygons are triangulated here (triangulatePolygon),
     // and points and lines are counted and left out face by face.
     const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-    if (scene == nullptr)
-        return model::makeError("'" + path + "' could not be read: " + importer.GetErrorString());
+    if (scene == nullptr) {
+        // Assimp turns an exception of its readers into this string; a
+        // std::bad_alloc is a broken file claiming more than any memory.
+        const std::string reason = importer.GetErrorString();
+        return model::makeError("'" + path + "' could not be read: " +
+                                (reason.find("bad_alloc") != std::string::npos
+                                     ? "it asks for more memory than there is (a broken or truncated file)"
+                                     : reason));
+    }
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0)
         return model::makeError("'" + path + "' is incomplete (the reader gave up part way)");
 

@@ -1909,6 +1909,21 @@ Soubor na disku zůstal beze změny.</translation>
     </message>
 </context>
 <context>
+    <name>regio::editor::PreviewSession</name>
+    <message>
+        <source>the solver ran out of memory (try a larger patch size or a lower hemicube resolution)</source>
+        <translation>řešiči došla paměť (zkuste větší velikost plošky nebo nižší rozlišení polokrychle)</translation>
+    </message>
+    <message>
+        <source>the solver failed: %1</source>
+        <translation>řešič selhal: %1</translation>
+    </message>
+    <message>
+        <source>the solver failed</source>
+        <translation>řešič selhal</translation>
+    </message>
+</context>
+<context>
     <name>regio::editor::PrimitiveDialog</name>
     <message>
         <source>Box</source>
@@ -1974,48 +1989,8 @@ Soubor na disku zůstal beze změny.</translation>
         <translation>Řešič</translation>
     </message>
     <message>
-        <source>Resolution N of the hemicube&apos;s top face (sides are N × N/2); even</source>
-        <translation>Rozlišení N horní stěny polokrychle (boční stěny mají N × N/2); sudé</translation>
-    </message>
-    <message>
-        <source>Hemicube:</source>
-        <translation>Polokrychle:</translation>
-    </message>
-    <message>
         <source> m</source>
         <translation> m</translation>
-    </message>
-    <message>
-        <source>Patch size:</source>
-        <translation>Velikost plošky:</translation>
-    </message>
-    <message>
-        <source>Elements per patch:</source>
-        <translation>Prvků na plošku:</translation>
-    </message>
-    <message>
-        <source>Adaptive subdivision</source>
-        <translation>Adaptivní dělení</translation>
-    </message>
-    <message>
-        <source>Threshold:</source>
-        <translation>Práh:</translation>
-    </message>
-    <message>
-        <source>Minimum edge:</source>
-        <translation>Nejkratší hrana:</translation>
-    </message>
-    <message>
-        <source>Maximum iterations:</source>
-        <translation>Nejvýše iterací:</translation>
-    </message>
-    <message>
-        <source>Stop when the unshot power falls below this fraction of the emitted power</source>
-        <translation>Skončit, když nevyzářený výkon klesne pod tento podíl vyzářeného výkonu</translation>
-    </message>
-    <message>
-        <source>Convergence:</source>
-        <translation>Konvergence:</translation>
     </message>
     <message>
         <source>Scene camera</source>
@@ -2220,6 +2195,14 @@ Soubor na disku zůstal beze změny.</translation>
             <numerusform>Pořadí BSP: %n stěny</numerusform>
             <numerusform>Pořadí BSP: %n stěn</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The hemicube, the mesh and when to stop are set in the Solver panel, beside the preview.</source>
+        <translation>Polokrychle, síť a podmínky zastavení se nastavují v panelu Řešič vedle náhledu.</translation>
+    </message>
+    <message>
+        <source>Show Solver Panel</source>
+        <translation>Zobrazit panel Řešič</translation>
     </message>
 </context>
 <context>

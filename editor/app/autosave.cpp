@@ -82,9 +82,13 @@ bool Autosave::saveNow()
         discard();
         return true;
     }
-    model::Check written = model::writeFileAtomically(toStd(m_scenePath), model::serializeScene(m_document->scene()));
+    // The origin first: a recovery scene is never without the name of the
+    // file it belongs to, whenever the editor is killed (the scene alone
+    // would come back as an unsaved scene of no file).
+    model::Check written =
+        model::writeFileAtomically(toStd(m_originPath), m_document->filePath().toUtf8().toStdString());
     if (written)
-        written = model::writeFileAtomically(toStd(m_originPath), m_document->filePath().toUtf8().toStdString());
+        written = model::writeFileAtomically(toStd(m_scenePath), model::serializeScene(m_document->scene()));
     if (!written) {
         emit saveFailed(tr("Autosave to %1 failed: %2").arg(m_scenePath, toQString(written.error().message)));
         return false;

@@ -151,6 +151,10 @@ void MainWindow::createDocks()
 
     m_preview = new PreviewController(m_document, m_viewport, this, m_options.interactive);
     tabifyDockWidget(m_properties, m_preview->solverDock());
+    connect(m_properties, &PropertiesDock::solverPanelRequested, this, [this] {
+        m_preview->solverDock()->show();
+        m_preview->solverDock()->raise();
+    });
     m_properties->raise();
 }
 

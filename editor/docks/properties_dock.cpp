@@ -11,16 +11,13 @@
 #include "editor/objects/authoring.h"
 #include "editor/viewport/scene_mesh.h"
 
-#include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
@@ -31,27 +28,6 @@ namespace regio::editor {
 namespace {
 
 enum Page { ScenePage, ElementPage, FacePage, MaterialPage, RegionPage };
-
-QDoubleSpinBox* doubleBox(QWidget* parent, double min, double max, int decimals, double step,
-                          const QString& suffix = {})
-{
-    auto* box = new QDoubleSpinBox(parent);
-    box->setRange(min, max);
-    box->setDecimals(decimals);
-    box->setSingleStep(step);
-    box->setSuffix(suffix);
-    box->setKeyboardTracking(false);
-    return box;
-}
-
-QSpinBox* intBox(QWidget* parent, int min, int max, int step = 1)
-{
-    auto* box = new QSpinBox(parent);
-    box->setRange(min, max);
-    box->setSingleStep(step);
-    box->setKeyboardTracking(false);
-    return box;
-}
 
 QLabel* infoLabel(QWidget* parent)
 {
@@ -96,31 +72,17 @@ QWidget* PropertiesDock::buildScenePage()
 {
     auto* page = new QWidget(this);
     auto* layout = new QVBoxLayout(page);
+    // The solver's settings live in the Solver panel only: one place to
+    // read and change them, beside the preview they drive.
     auto* solver = new QGroupBox(tr("Solver"), page);
-    auto* form = new QFormLayout(solver);
-    m_hemicube = intBox(solver, 8, 4096, 2);
-    m_hemicube->setToolTip(tr("Resolution N of the hemicube's top face (sides are N × N/2); even"));
-    form->addRow(tr("Hemicube:"), m_hemicube);
-    m_patchSize = doubleBox(solver, 0.001, 100.0, 3, 0.05, tr(" m"));
-    form->addRow(tr("Patch size:"), m_patchSize);
-    m_elementsPerPatch = intBox(solver, 1, 4096);
-    form->addRow(tr("Elements per patch:"), m_elementsPerPatch);
-    m_adaptive = new QCheckBox(tr("Adaptive subdivision"), solver);
-    form->addRow(m_adaptive);
-    m_threshold = doubleBox(solver, 0.0001, 1.0, 4, 0.01);
-    form->addRow(tr("Threshold:"), m_threshold);
-    m_minEdge = doubleBox(solver, 0.0001, 100.0, 4, 0.005, tr(" m"));
-    form->addRow(tr("Minimum edge:"), m_minEdge);
-    m_maxIterations = intBox(solver, 1, 10000000, 10);
-    form->addRow(tr("Maximum iterations:"), m_maxIterations);
-    m_convergence = doubleBox(solver, 0.000001, 0.999999, 6, 0.0005);
-    m_convergence->setToolTip(tr("Stop when the unshot power falls below this fraction of the emitted power"));
-    form->addRow(tr("Convergence:"), m_convergence);
-    for (QSpinBox* box : {m_hemicube, m_elementsPerPatch, m_maxIterations})
-        connect(box, &QSpinBox::valueChanged, this, &PropertiesDock::commitSolverSettings);
-    for (QDoubleSpinBox* box : {m_patchSize, m_threshold, m_minEdge, m_convergence})
-        connect(box, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::commitSolverSettings);
-    connect(m_adaptive, &QCheckBox::toggled, this, &PropertiesDock::commitSolverSettings);
+    auto* solverLayout = new QVBoxLayout(solver);
+    QLabel* note = infoLabel(solver);
+    note->setText(tr("The hemicube, the mesh and when to stop are set in the Solver panel, beside the preview."));
+    solverLayout->addWidget(note);
+    auto* showSolver = new QPushButton(tr("Show Solver Panel"), solver);
+    showSolver->setObjectName(QStringLiteral("showSolverPanel"));
+    connect(showSolver, &QPushButton::clicked, this, &PropertiesDock::solverPanelRequested);
+    solverLayout->addWidget(showSolver);
     layout->addWidget(solver);
 
     auto* camera = new QGroupBox(tr("Scene camera"), page);
@@ -335,40 +297,12 @@ void PropertiesDock::refresh()
 void PropertiesDock::refreshScene()
 {
     const model::Scene& scene = m_document->scene();
-    const model::SolverSettings& s = scene.solver;
-    m_hemicube->setValue(s.hemicube);
-    m_patchSize->setValue(s.patchSize);
-    m_elementsPerPatch->setValue(s.elementsPerPatch);
-    m_adaptive->setChecked(s.adaptive.enabled);
-    m_threshold->setValue(s.adaptive.threshold);
-    m_minEdge->setValue(s.adaptive.minEdge);
-    m_threshold->setEnabled(s.adaptive.enabled);
-    m_minEdge->setEnabled(s.adaptive.enabled);
-    m_maxIterations->setValue(s.maxIterations);
-    m_convergence->setValue(s.convergence);
     if (scene.camera)
         m_cameraInfo->setText(tr("Eye %1, looking at %2, field of view %3°")
                                   .arg(formatVector(scene.camera->position), formatVector(scene.camera->target),
                                        formatNumber(scene.camera->fovY)));
     else
         m_cameraInfo->setText(tr("None: the view frames the whole scene when it opens."));
-}
-
-void PropertiesDock::commitSolverSettings()
-{
-    if (m_refreshing)
-        return;
-    model::SolverSettings s = m_document->scene().solver;
-    s.hemicube = m_hemicube->value();
-    s.patchSize = m_patchSize->value();
-    s.elementsPerPatch = m_elementsPerPatch->value();
-    s.adaptive.enabled = m_adaptive->isChecked();
-    s.adaptive.threshold = m_threshold->value();
-    s.adaptive.minEdge = m_minEdge->value();
-    s.maxIterations = m_maxIterations->value();
-    s.convergence = m_convergence->value();
-    if (!(s == m_document->scene().solver) && !m_document->push(new SetSolverSettings(m_document, s)))
-        refresh(); // refused: show the values that are in force
 }
 
 void PropertiesDock::fillMaterialCombo(QComboBox* combo, const std::string& current, const QString& emptyLabel)

@@ -26,8 +26,11 @@ public:
     // The widgets, for tests.
     VectorEditor* positionEditor() const { return m_position; }
     QLineEdit* nameEdit() const { return m_name; }
-    QSpinBox* hemicubeEdit() const { return m_hemicube; }
     int currentPage() const;
+
+signals:
+    // The user asked for the solver's settings (the Solver panel).
+    void solverPanelRequested();
 
 private:
     QWidget* buildScenePage();
@@ -42,7 +45,6 @@ private:
     void refreshMaterial();
     void refreshRegion();
     void fillMaterialCombo(QComboBox* combo, const std::string& current, const QString& emptyLabel);
-    void commitSolverSettings();
 
     SceneDocument* m_document;
     Authoring* m_authoring;
@@ -50,14 +52,6 @@ private:
     bool m_refreshing = false;
 
     // scene page
-    QSpinBox* m_hemicube;
-    QDoubleSpinBox* m_patchSize;
-    QSpinBox* m_elementsPerPatch;
-    QCheckBox* m_adaptive;
-    QDoubleSpinBox* m_threshold;
-    QDoubleSpinBox* m_minEdge;
-    QSpinBox* m_maxIterations;
-    QDoubleSpinBox* m_convergence;
     QLabel* m_cameraInfo;
 
     // object / part page

@@ -10,6 +10,7 @@
 #include "editor/docks/vector_editor.h"
 #include "editor/document/commands/part_commands.h"
 #include "editor/document/commands/region_commands.h"
+#include "editor/preview/solver_dock.h"
 #include "support/editor_documents.h"
 #include "support/qt_test_registry.h"
 
@@ -18,6 +19,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
@@ -183,16 +185,23 @@ private slots:
         QVERIFY(DiagnosticsDock::selectionFor(scene, {}).empty());
     }
 
-    void thePropertiesShowTheSolverSettingsWhenNothingIsSelected()
+    // The solver's settings have one place, the Solver panel: the
+    // Properties panel with nothing selected points there. (A second set of
+    // controls once stored every setting rounded to its own decimals.)
+    void thePropertiesPointToTheSolverPanelWhenNothingIsSelected()
     {
         auto window = makeWindow(test::smallScene());
         PropertiesDock* properties = dock<PropertiesDock>(window.get());
-        QCOMPARE(properties->hemicubeEdit()->value(), 150);
-        properties->hemicubeEdit()->setValue(200);
-        QCOMPARE(window->document()->scene().solver.hemicube, 200);
-        QCOMPARE(window->document()->undoStack()->count(), 1);
-        window->document()->undoStack()->undo();
-        QCOMPARE(properties->hemicubeEdit()->value(), 150);
+        QCOMPARE(properties->currentPage(), 0);
+        QVERIFY(properties->findChildren<QSpinBox*>().size() < 3); // no hemicube, no iterations
+        auto* solver = dock<SolverDock>(window.get());
+        solver->hide();
+        QVERIFY(solver->isHidden());
+        auto* show = properties->findChild<QPushButton*>(QStringLiteral("showSolverPanel"));
+        QVERIFY(show);
+        show->click();
+        QVERIFY(!solver->isHidden());
+        QCOMPARE(window->document()->undoStack()->count(), 0);
     }
 
     void editingTheCentreMovesTheSelection()
