@@ -93,6 +93,14 @@
         <source>cannot open %1:</source>
         <translation>nelze otevřít %1:</translation>
     </message>
+    <message>
+        <source>there is no display to open the editor&apos;s window on (DISPLAY is not set). Run it on a desktop, or with ssh -X.</source>
+        <translation>není displej, na kterém by se otevřelo okno editoru (DISPLAY není nastaveno). Spusťte jej na ploše nebo přes ssh -X.</translation>
+    </message>
+    <message>
+        <source>--screenshot draws the editor&apos;s window and needs a display, real or virtual: run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...).</source>
+        <translation>--screenshot kreslí okno editoru a potřebuje displej, skutečný nebo virtuální: spusťte jej na ploše nebo pod Xvfb (xvfb-run -a regio --screenshot ...).</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::Authoring</name>

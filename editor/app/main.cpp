@@ -14,6 +14,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <variant>
 
 using namespace regio::editor;
 
@@ -59,23 +60,37 @@ int runScreenshot(const CommandLineOptions& options)
     return exitCode;
 }
 
-} // namespace
-
-int main(int argc, char* argv[])
+// Whether Qt's GUI platform will find what it needs: an X or Wayland
+// display for the default platforms, nothing for offscreen and the like.
+bool displayAvailable(const QStringList& arguments)
 {
-    // The viewport needs a 3.3 core context; ask for it before any widget exists.
-    QSurfaceFormat::setDefaultFormat(Viewport::requestedFormat());
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("Regio"));
-    QApplication::setApplicationName(QStringLiteral("Regio"));
-    QApplication::setApplicationVersion(QStringLiteral(REGIO_VERSION));
+    QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
+    if (const qsizetype at = arguments.indexOf(QStringLiteral("-platform")); at >= 0 && at + 1 < arguments.size())
+        platform = arguments.at(at + 1);
+    platform = platform.section(QLatin1Char(':'), 0, 0);
+    const bool x = !qEnvironmentVariableIsEmpty("DISPLAY");
+    const bool wayland = !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    if (platform.isEmpty())
+        return x || wayland;
+    if (platform == QLatin1String("xcb"))
+        return x;
+    if (platform.startsWith(QLatin1String("wayland")))
+        return wayland;
+    return true; // offscreen, minimal, vnc, eglfs, linuxfb: no display server
+}
 
+// What the command line asks, answered without a GUI platform where it can
+// be: --help, --version and every error need no display, so they work over
+// ssh and in scripts. Returns the options, or the exit code when done.
+std::variant<CommandLineOptions, int> readCommandLine(int argc, char* argv[])
+{
+    QCoreApplication core(argc, argv);
     QSettings settings;
     const Preferences preferences = Preferences::load(settings);
-    const QString language = parseCommandLine(QApplication::arguments()).language;
-    installTranslators(app, language.isEmpty() ? preferences.language : language);
+    const QString language = parseCommandLine(QCoreApplication::arguments()).language;
+    installTranslators(core, language.isEmpty() ? preferences.language : language);
     // Parsed again so that its messages come out in the chosen language.
-    const CommandLineOptions options = parseCommandLine(QApplication::arguments());
+    const CommandLineOptions options = parseCommandLine(QCoreApplication::arguments());
     if (!options.ok) {
         printError(options.error);
         return 2;
@@ -84,6 +99,36 @@ int main(int argc, char* argv[])
         std::fputs(qPrintable(options.message), stdout);
         return 0;
     }
+    if (!displayAvailable(QCoreApplication::arguments())) {
+        printError(options.screenshotPath.isEmpty()
+                       ? QCoreApplication::translate("main",
+                                                     "there is no display to open the editor's window on (DISPLAY "
+                                                     "is not set). Run it on a desktop, or with ssh -X.")
+                       : QCoreApplication::translate(
+                             "main", "--screenshot draws the editor's window and needs a display, real or virtual: "
+                                     "run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...)."));
+        return 2;
+    }
+    return options;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("Regio"));
+    QCoreApplication::setApplicationName(QStringLiteral("Regio"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(REGIO_VERSION));
+    const std::variant<CommandLineOptions, int> read = readCommandLine(argc, argv);
+    if (const int* exitCode = std::get_if<int>(&read))
+        return *exitCode;
+    const CommandLineOptions& options = std::get<CommandLineOptions>(read);
+
+    // The viewport needs a 3.3 core context; ask for it before any widget exists.
+    QSurfaceFormat::setDefaultFormat(Viewport::requestedFormat());
+    QApplication app(argc, argv);
+    QSettings settings;
+    installTranslators(app, options.language.isEmpty() ? Preferences::load(settings).language : options.language);
     if (!options.screenshotPath.isEmpty())
         return runScreenshot(options);
 
