@@ -223,6 +223,12 @@ StopReason Solver::run(const Progress& progress, const std::atomic<bool>& cancel
     return reason;
 }
 
+void Solver::extendIterationLimit(int shots)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_settings.maxIterations = m_stats.iterations + std::max(1, shots);
+}
+
 SolverStats Solver::stats() const
 {
     std::lock_guard<std::mutex> lock(m_mutex);

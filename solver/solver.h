@@ -72,6 +72,11 @@ public:
     // finished before the next shot). `progress` is called after every shot.
     StopReason run(const Progress& progress, const std::atomic<bool>& cancel);
 
+    // Moves the iteration limit to `shots` past the shots done, so that run()
+    // goes on after it stopped at the limit (the editor's Continue). Not
+    // while run() works.
+    void extendIterationLimit(int shots);
+
     bool converged() const;
     SolverStats stats() const;
     SolutionSnapshot snapshot() const;

@@ -1780,10 +1780,6 @@ Soubor na disku zůstal beze změny.</translation>
         <translation>Pozastaveno</translation>
     </message>
     <message>
-        <source>Solved: %1</source>
-        <translation>Vyřešeno: %1</translation>
-    </message>
-    <message>
         <source>Solved</source>
         <translation>Vyřešeno</translation>
     </message>
@@ -1854,6 +1850,26 @@ Soubor na disku zůstal beze změny.</translation>
         <translation>Zapsáno %1 s nastavením finální předvolby. Tento příkaz, nyní ve schránce, ji vyřeší a zapíše zprávu, osvětlený model a obrázek:
 
 %2</translation>
+    </message>
+    <message>
+        <source>&amp;Continue</source>
+        <translation>Po&amp;kračovat v řešení</translation>
+    </message>
+    <message>
+        <source>Go on from where the solve stopped: its iteration limit or your Stop</source>
+        <translation>Pokračovat tam, kde se řešení zastavilo: na limitu iterací nebo po vašem Zastavit</translation>
+    </message>
+    <message>
+        <source>Stopped at the iteration limit, not converged: %1 (Continue goes on)</source>
+        <translation>Zastaveno na limitu iterací, nezkonvergovalo: %1 (Pokračovat v řešení jde dál)</translation>
+    </message>
+    <message>
+        <source>Stopped by you, not converged: %1 (Continue goes on)</source>
+        <translation>Zastaveno vámi, nezkonvergovalo: %1 (Pokračovat v řešení jde dál)</translation>
+    </message>
+    <message>
+        <source>Converged: %1</source>
+        <translation>Zkonvergovalo: %1</translation>
     </message>
 </context>
 <context>

@@ -105,8 +105,9 @@ std::variant<CommandLineOptions, int> readCommandLine(int argc, char* argv[])
                                                      "there is no display to open the editor's window on (DISPLAY "
                                                      "is not set). Run it on a desktop, or with ssh -X.")
                        : QCoreApplication::translate(
-                             "main", "--screenshot draws the editor's window and needs a display, real or virtual: "
-                                     "run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...)."));
+                             "main",
+                             "--screenshot draws the editor's window and needs a display, real or virtual: "
+                             "run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...)."));
         return 2;
     }
     return options;

@@ -22,8 +22,12 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QStatusBar>
 #include <QToolBar>
+
+#include <algorithm>
+#include <cmath>
 
 namespace regio::editor {
 
@@ -38,8 +42,8 @@ PreviewController::PreviewController(SceneDocument* document, Viewport* viewport
     m_pool.setMaxThreadCount(1);
     createActions();
     m_dock = new SolverDock(document,
-                            {m_actions.run, m_actions.pause, m_actions.stop, m_actions.reset, m_actions.live,
-                             m_actions.dryRun, m_actions.inspect, m_actions.hemicube},
+                            {m_actions.run, m_actions.continueSolve, m_actions.pause, m_actions.stop, m_actions.reset,
+                             m_actions.live, m_actions.dryRun, m_actions.inspect, m_actions.hemicube},
                             window);
     window->addDockWidget(Qt::RightDockWidgetArea, m_dock);
     m_convergence = new ConvergenceDock(window);
@@ -52,6 +56,14 @@ PreviewController::PreviewController(SceneDocument* document, Viewport* viewport
 
     m_status = new QLabel(window);
     window->statusBar()->addPermanentWidget(m_status);
+    // Busy while the scene is prepared, then how far the solve is.
+    m_progress = new QProgressBar(window);
+    m_progress->setObjectName(QStringLiteral("previewProgress"));
+    m_progress->setMaximumWidth(120);
+    m_progress->setMaximumHeight(14);
+    m_progress->setTextVisible(false);
+    m_progress->hide();
+    window->statusBar()->addPermanentWidget(m_progress);
 
     m_inspector = std::make_unique<PreviewInspector>([this] { return m_shownFrame; });
     connect(m_inspector.get(), &PreviewInspector::inspected, this, [this](const Inspection& i) {
@@ -131,6 +143,8 @@ void PreviewController::createActions()
     };
     a.run = make(tr("&Run"), tr("Solve the scene as it is now (the preview shows it progressively)"));
     a.run->setShortcut(Qt::Key_F5);
+    a.continueSolve = make(tr("&Continue"), tr("Go on from where the solve stopped: its iteration limit or your Stop"));
+    a.continueSolve->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
     a.pause = make(tr("&Pause"), tr("Pause the solve, or resume it"));
     a.pause->setShortcut(Qt::Key_F6);
     a.stop = make(tr("&Stop"), tr("End the solve; the solution stays"));
@@ -158,6 +172,7 @@ void PreviewController::createActions()
             m_runner->pause();
     });
     connect(a.stop, &QAction::triggered, m_runner, &PreviewRunner::stop);
+    connect(a.continueSolve, &QAction::triggered, m_runner, &PreviewRunner::continueSolve);
     connect(a.reset, &QAction::triggered, this, [this] {
         m_debounce.stop();
         m_runner->reset();
@@ -191,6 +206,7 @@ void PreviewController::populateMenu(QMenu* menu)
 {
     auto& a = m_actions;
     menu->addAction(a.run);
+    menu->addAction(a.continueSolve);
     menu->addAction(a.pause);
     menu->addAction(a.stop);
     menu->addAction(a.reset);
@@ -214,7 +230,8 @@ void PreviewController::populateMenu(QMenu* menu)
 void PreviewController::populateToolBar(QToolBar* toolBar)
 {
     toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    for (QAction* action : {m_actions.run, m_actions.pause, m_actions.stop, m_actions.reset, m_actions.live})
+    for (QAction* action :
+         {m_actions.run, m_actions.continueSolve, m_actions.pause, m_actions.stop, m_actions.reset, m_actions.live})
         toolBar->addAction(action);
 }
 
@@ -361,7 +378,23 @@ QString PreviewController::statusText() const
     case PreviewState::Preparing: text = tr("Preview: preparing the scene…"); break;
     case PreviewState::Running: text = f ? tr("Solving: %1").arg(figures()) : tr("Solving…"); break;
     case PreviewState::Paused: text = f ? tr("Paused: %1").arg(figures()) : tr("Paused"); break;
-    case PreviewState::Finished: text = f ? tr("Solved: %1").arg(figures()) : tr("Solved"); break;
+    case PreviewState::Finished:
+        if (!f) {
+            text = tr("Solved");
+            break;
+        }
+        // Why it stopped: a solve at its iteration limit or stopped by the
+        // user has light left to shoot, and says so.
+        switch (f->snapshot.stats.stop) {
+        case solver::StopReason::MaxIterations:
+            text = tr("Stopped at the iteration limit, not converged: %1 (Continue goes on)").arg(figures());
+            break;
+        case solver::StopReason::Cancelled:
+            text = tr("Stopped by you, not converged: %1 (Continue goes on)").arg(figures());
+            break;
+        default: text = tr("Converged: %1").arg(figures()); break;
+        }
+        break;
     case PreviewState::Failed: text = tr("Preview: the scene cannot be solved"); break;
     }
     if (m_runner->isStale())
@@ -374,8 +407,34 @@ void PreviewController::updateStatus()
     const QString text = statusText();
     if (text != m_status->text()) {
         m_status->setText(text);
+        m_dock->setStatus(text);
         emit statusChanged(text);
     }
+    const PreviewState state = m_runner->state();
+    const bool working = state == PreviewState::Preparing || state == PreviewState::Running;
+    m_progress->setVisible(working);
+    if (working) {
+        const int percent = progressPercent();
+        m_progress->setRange(0, percent < 0 ? 0 : 100); // 0..0: busy
+        if (percent >= 0)
+            m_progress->setValue(percent);
+    }
+    updateActions();
+}
+
+int PreviewController::progressPercent() const
+{
+    const std::shared_ptr<const PreviewFrame>& f = m_shownFrame;
+    if (!f || m_runner->state() == PreviewState::Preparing)
+        return -1;
+    const solver::SolverStats& s = f->snapshot.stats;
+    const double byShots = f->settings.maxIterations > 0 ? double(s.iterations) / f->settings.maxIterations : 0.0;
+    // The unshot ratio falls from 1 towards the target about exponentially.
+    const double target = f->settings.convergence;
+    const double byLight = s.unshotRatio > 0.0 && target > 0.0 && target < 1.0
+                               ? std::log(std::min(1.0, s.unshotRatio)) / std::log(target)
+                               : 0.0;
+    return int(std::clamp(100.0 * std::max(byShots, byLight), 0.0, 100.0));
 }
 
 void PreviewController::updateActions()
@@ -385,6 +444,9 @@ void PreviewController::updateActions()
     a.pause->setEnabled(s == PreviewState::Running || s == PreviewState::Paused);
     a.pause->setText(s == PreviewState::Paused ? tr("Res&ume") : tr("&Pause"));
     a.stop->setEnabled(s == PreviewState::Running || s == PreviewState::Paused || s == PreviewState::Preparing);
+    const solver::StopReason stop = m_shownFrame ? m_shownFrame->snapshot.stats.stop : solver::StopReason::None;
+    a.continueSolve->setEnabled(s == PreviewState::Finished && !m_runner->isStale() &&
+                                (stop == solver::StopReason::MaxIterations || stop == solver::StopReason::Cancelled));
     a.reset->setEnabled(s != PreviewState::Idle);
     a.hemicube->setEnabled(s != PreviewState::Idle && s != PreviewState::Failed && s != PreviewState::Preparing);
     a.exportModel->setEnabled(s != PreviewState::Idle && s != PreviewState::Failed);

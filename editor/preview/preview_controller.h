@@ -20,6 +20,7 @@
 
 class QAction;
 class QLabel;
+class QProgressBar;
 class QMainWindow;
 class QMenu;
 class QToolBar;
@@ -44,6 +45,12 @@ public:
 
     PreviewRunner* runner() const { return m_runner; }
     SolverDock* solverDock() const { return m_dock; }
+    // Solve > Continue: enabled when a solve stopped short of convergence.
+    QAction* continueAction() const { return m_actions.continueSolve; }
+    // How far the solve is, 0..100 (the larger of the shots against the
+    // limit and the unshot power's way down to the target, on a log scale);
+    // -1 while preparing (no measure yet).
+    int progressPercent() const;
     ConvergenceDock* convergenceDock() const { return m_convergence; }
     PreviewInspector* inspector() const { return m_inspector.get(); }
 
@@ -104,6 +111,7 @@ private:
     std::unique_ptr<PreviewInspector> m_inspector;
     QPointer<HemicubeDialog> m_hemicubeDialog;
     QLabel* m_status = nullptr;
+    QProgressBar* m_progress = nullptr;
     QTimer m_debounce;
     QTimer m_statusTimer;
 
@@ -118,7 +126,7 @@ private:
     int m_inspectedPatch = -1;
 
     struct {
-        QAction *run, *pause, *stop, *reset, *live, *dryRun, *inspect, *hemicube;
+        QAction *run, *continueSolve, *pause, *stop, *reset, *live, *dryRun, *inspect, *hemicube;
         QAction *draft, *normal, *final;
         QAction *exportModel, *exportImage, *exportBatch;
     } m_actions{};

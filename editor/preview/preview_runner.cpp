@@ -71,6 +71,14 @@ void PreviewRunner::stop()
         m_session->stop();
 }
 
+void PreviewRunner::continueSolve()
+{
+    // A stale solution is of a scene that is no longer there: Run solves the
+    // new one.
+    if (m_session && m_state == PreviewState::Finished && !m_stale && m_session->continueRun())
+        setState(PreviewState::Running);
+}
+
 void PreviewRunner::reset()
 {
     retireCurrent();

@@ -37,6 +37,8 @@ public:
     void pause();
     void resume();
     void stop();
+    // Goes on with a finished solve that stopped short of convergence.
+    void continueSolve();
     // Drops the solve and its solution.
     void reset();
 

@@ -62,6 +62,19 @@ void PreviewSession::stop()
     m_wake.notify_all();
 }
 
+bool PreviewSession::continueRun()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_solver || !m_done || m_quit)
+        return false;
+    m_solver->extendIterationLimit(m_iterationStep);
+    m_done = false;
+    m_stopRequested = false;
+    m_paused = false;
+    m_wake.notify_all();
+    return true;
+}
+
 void PreviewSession::quit()
 {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -257,7 +270,11 @@ void PreviewSession::work()
         m_notify(SessionEvent::Failed);
         return;
     }
-    m_solver = std::move(*built);
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_solver = std::move(*built);
+        m_iterationStep = m_solver->settings().maxIterations;
+    }
     // The scene copy is no longer needed: the solver works on its own PreparedScene.
     m_config.scene = model::Scene{};
     publish(!m_config.startPaused);

@@ -87,6 +87,10 @@ public:
     void stop();
     // Stop and let the worker exit (no further events).
     void quit();
+    // After a run that stopped short of convergence (at the iteration limit,
+    // or stopped by the user): goes on from there, up to the scene's
+    // maxIterations shots more. False when there is nothing to continue.
+    bool continueRun();
     // The worker has returned (after quit, or when preparation failed).
     bool exited() const { return m_exited.load(); }
     bool finished() const;
@@ -124,6 +128,7 @@ private:
     std::condition_variable m_wake;
     bool m_paused = false;
     bool m_stopRequested = false;
+    int m_iterationStep = 0; // the shots a Continue adds: the settings' maxIterations
     bool m_quit = false;
     bool m_done = false;
     std::optional<std::pair<int, int>> m_hemicubeRequest;

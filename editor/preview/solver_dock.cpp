@@ -63,9 +63,14 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     auto* layout = new QVBoxLayout(content);
 
     auto* controls = new QHBoxLayout;
-    for (QAction* a : {actions.run, actions.pause, actions.stop, actions.reset})
+    for (QAction* a : {actions.run, actions.continueSolve, actions.pause, actions.stop, actions.reset})
         controls->addWidget(buttonFor(a, content));
     layout->addLayout(controls);
+    m_status = new QLabel(content);
+    m_status->setObjectName(QStringLiteral("solveStatus"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_status);
     auto* options = new QHBoxLayout;
     for (QAction* a : {actions.live, actions.inspect, actions.hemicube})
         options->addWidget(buttonFor(a, content));
@@ -273,6 +278,10 @@ void SolverDock::edited()
         s.regions = model::RegionsMode(m_regions->currentData().toInt());
     applySettings(s);
 }
+
+void SolverDock::setStatus(const QString& text) { m_status->setText(text); }
+
+QString SolverDock::status() const { return m_status->text(); }
 
 void SolverDock::setDisplay(const PreviewDisplay& display)
 {

@@ -30,7 +30,7 @@ class SolverDock : public QDockWidget {
     Q_OBJECT
 public:
     struct Actions {
-        QAction *run, *pause, *stop, *reset, *live, *dryRun, *inspect, *hemicube;
+        QAction *run, *continueSolve, *pause, *stop, *reset, *live, *dryRun, *inspect, *hemicube;
     };
     SolverDock(SceneDocument* document, const Actions& actions, QWidget* parent = nullptr);
 
@@ -38,6 +38,9 @@ public:
     void setDisplay(const PreviewDisplay& display);
     void setLegend(const std::optional<output::FalseColourLegend>& legend, double whiteReference);
     void setInspection(const QString& text);
+    // Where the solve is and why it stopped (the status bar's text).
+    void setStatus(const QString& text);
+    QString status() const;
 
     // Pushes one SetSolverSettings (what every control of the dock does).
     bool applySettings(const model::SolverSettings& settings);
@@ -76,6 +79,7 @@ private:
     QCheckBox* m_mesh = nullptr;
     LegendWidget* m_legend = nullptr;
     QLabel* m_white = nullptr;
+    QLabel* m_status = nullptr;
     QPlainTextEdit* m_inspection = nullptr;
 };
 

@@ -454,3 +454,19 @@ TEST(SolveCommand, TheGuideDocumentsEveryFieldOfTheReport)
         }
     }
 }
+
+// A new user's first solve of a sample ends converged, not at its iteration
+// limit with light left to shoot.
+TEST(SampleScenes, ConvergeWithinTheirOwnLimits)
+{
+    for (const char* name : {"cornell-box", "two-lights-room"}) {
+        Scratch scratch;
+        const CommandRun run = solve({"--quiet", "--report", (scratch / "r.json").string(), samplePath(name).string()});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const json r = json::parse(readText(scratch / "r.json"));
+        EXPECT_EQ(r["stop"], "converged") << name << ": " << r["iterations"] << " of " << r["maxIterations"]
+                                          << " iterations, unshot " << r["unshotRatio"];
+        EXPECT_LT(r["iterations"].get<int>(), r["maxIterations"].get<int>() * 9 / 10)
+            << name << ": converged too close to its limit";
+    }
+}

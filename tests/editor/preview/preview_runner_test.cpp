@@ -11,6 +11,7 @@
 #include "editor/preview/preview_export.h"
 #include "editor/preview/preview_inspector.h"
 #include "editor/preview/preview_runner.h"
+#include "editor/preview/solver_dock.h"
 #include "editor/preview/solver_presets.h"
 #include "editor/viewport/viewport.h"
 #include "model/io/scene_json.h"
@@ -25,6 +26,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -291,6 +293,77 @@ private slots:
         QVERIFY(!window->document()->isModified());
         window->preview()->run();
         QVERIFY(waitForFinal(*runner, 60000));
+    }
+
+    // The status says why a solve stopped, with the light not yet shot, and
+    // Continue goes on from there: N shots and then N more are the 2N shots
+    // of one solve.
+    void aSolveAtItsIterationLimitSaysSoAndContinueGoesOnFromThere()
+    {
+        auto window = makeWindow();
+        model::Scene scene = draftSample("two-lights-room");
+        scene.solver.maxIterations = 30;
+        window->document()->reset(scene);
+        PreviewController* preview = window->preview();
+        auto* progress = window->findChild<QProgressBar*>(QStringLiteral("previewProgress"));
+        QVERIFY(progress);
+        preview->run();
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
+        QVERIFY(waitForFinal(*preview->runner()));
+        QTRY_VERIFY(
+            preview->statusText().startsWith(QStringLiteral("Stopped at the iteration limit, not converged: "
+                                                            "iteration 30, unshot ")));
+        QVERIFY(preview->statusText().contains(QStringLiteral("(Continue goes on)")));
+        QCOMPARE(preview->solverDock()->status(), preview->statusText());
+        QVERIFY(progress->isHidden());
+        QVERIFY(preview->continueAction()->isEnabled());
+
+        preview->continueAction()->trigger();
+        QCOMPARE(preview->runner()->state(), PreviewState::Running);
+        QVERIFY(!preview->continueAction()->isEnabled());
+        QVERIFY(!progress->isHidden());
+        QVERIFY(waitForFinal(*preview->runner()));
+        const solver::SolverStats continued = preview->runner()->frame()->snapshot.stats;
+        QCOMPARE(continued.iterations, 60);
+        QCOMPARE(continued.stop, solver::StopReason::MaxIterations);
+
+        PreviewRunner straight;
+        straight.start(scene, 60);
+        QVERIFY(waitForFinal(straight));
+        const solver::SolverStats once = straight.frame()->snapshot.stats;
+        QCOMPARE(continued.elements, once.elements);
+        QCOMPARE(continued.unshotRatio, once.unshotRatio);
+    }
+
+    void aSolveStoppedByTheUserSaysSoAndAConvergedOneOffersNoContinue()
+    {
+        auto window = makeWindow();
+        window->document()->reset(longSample());
+        PreviewController* preview = window->preview();
+        preview->run();
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            preview->runner()->frame() && preview->runner()->frame()->snapshot.stats.iterations > 3, 30000);
+        QTRY_VERIFY(preview->progressPercent() >= 0);
+        preview->runner()->stop();
+        QVERIFY(waitForFinal(*preview->runner()));
+        QTRY_VERIFY(preview->statusText().startsWith(QStringLiteral("Stopped by you, not converged: ")));
+        QVERIFY(preview->continueAction()->isEnabled());
+        // An edit makes the solution stale: Continue would go on with a scene
+        // that is gone, so only Run is offered.
+        window->document()->push(new SetSolverSettings(window->document(), draftSample("cornell-box").solver));
+        QTRY_VERIFY(preview->runner()->isStale());
+        QTRY_VERIFY(!preview->continueAction()->isEnabled());
+
+        model::Scene quick = draftSample("cornell-box");
+        quick.solver.convergence = 0.05;
+        quick.solver.maxIterations = 100000;
+        window->document()->reset(quick);
+        preview->run();
+        QVERIFY(waitForFinal(*preview->runner()));
+        QTRY_VERIFY(preview->statusText().startsWith(QStringLiteral("Converged: ")));
+        QVERIFY(!preview->continueAction()->isEnabled());
+        QCOMPARE(preview->progressPercent(), 100); // the unshot power below the target
     }
 
     void theViewportGetsTheSolutionAndMeshLayersWhileSolving()

@@ -26,7 +26,7 @@ namespace {
 SolverDock::Actions dummyActions(QObject* owner)
 {
     auto a = [owner] { return new QAction(QStringLiteral("x"), owner); };
-    return {a(), a(), a(), a(), a(), a(), a(), a()};
+    return {a(), a(), a(), a(), a(), a(), a(), a(), a()};
 }
 
 } // namespace
