@@ -628,10 +628,6 @@
         <translation>Velikost okna, například 1280x800.</translation>
     </message>
     <message>
-        <source>User interface language for this run (en, cs).</source>
-        <translation>Jazyk uživatelského rozhraní pro toto spuštění (en, cs).</translation>
-    </message>
-    <message>
         <source>The scene file to open (.json).</source>
         <translation>Soubor scény, který se má otevřít (.json).</translation>
     </message>
@@ -658,6 +654,10 @@
     <message>
         <source>--preview-iterations needs --screenshot</source>
         <translation>--preview-iterations vyžaduje --screenshot</translation>
+    </message>
+    <message>
+        <source>User interface language for this run (en, cs, de).</source>
+        <translation>Jazyk uživatelského rozhraní pro toto spuštění (en, cs, de).</translation>
     </message>
 </context>
 <context>
@@ -1513,6 +1513,14 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>Import a model file (OBJ, glTF, FBX, Collada, PLY, STL, 3DS, ...)</source>
         <translation>Importovat soubor modelu (OBJ, glTF, FBX, Collada, PLY, STL, 3DS, …)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Ob&amp;novit rozvržení</translation>
+    </message>
+    <message>
+        <source>Put every panel back where it was at first start, sized to the window</source>
+        <translation>Vrátit všechny panely tam, kde byly při prvním spuštění, s velikostí podle okna</translation>
     </message>
 </context>
 <context>

@@ -37,7 +37,7 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         QStringLiteral("WxH"));
     const QCommandLineOption language(
         QStringLiteral("lang"),
-        QCoreApplication::translate("regio::editor::CommandLine", "User interface language for this run (en, cs)."),
+        QCoreApplication::translate("regio::editor::CommandLine", "User interface language for this run (en, cs, de)."),
         QStringLiteral("code"));
     const QCommandLineOption previewIterations(
         QStringLiteral("preview-iterations"),
@@ -59,6 +59,8 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         options.error = parser.errorText();
         return options;
     }
+    // First, so that --help and every error come out in the language asked.
+    options.language = parser.value(language);
     if (parser.isSet(helpOption)) {
         options.exitNow = true;
         options.message = parser.helpText();

@@ -11,6 +11,7 @@
 #include "editor/docks/materials_dock.h"
 #include "editor/docks/properties_dock.h"
 #include "editor/docks/scene_tree_dock.h"
+#include "editor/docks/scene_tree_model.h"
 #include "editor/document/commands/import_command.h"
 #include "editor/document/qt_conversions.h"
 #include "editor/document/scene_document.h"
@@ -28,14 +29,19 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
+#include <QTreeView>
 #include <QUndoStack>
 #include <QUndoView>
+
+#include <algorithm>
 
 namespace regio::editor {
 
@@ -95,6 +101,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
         connect(m_autosave, &Autosave::saveFailed, this,
                 [this](const QString& message) { statusBar()->showMessage(message, 10000); });
     }
+    m_defaultState = saveState();
     readSettings();
     applyPreferences();
     m_document->reset(model::Scene{});
@@ -144,10 +151,6 @@ void MainWindow::createDocks()
     m_historyDock->setWidget(m_history);
     addDockWidget(Qt::LeftDockWidgetArea, m_historyDock);
     splitDockWidget(m_sceneTree, m_historyDock, Qt::Vertical);
-    resizeDocks({m_sceneTree, m_historyDock}, {3, 1}, Qt::Vertical);
-    resizeDocks({m_sceneTree}, {280}, Qt::Horizontal);
-    resizeDocks({m_properties}, {300}, Qt::Horizontal);
-    resizeDocks({m_diagnostics}, {140}, Qt::Vertical);
 
     m_preview = new PreviewController(m_document, m_viewport, this, m_options.interactive);
     tabifyDockWidget(m_properties, m_preview->solverDock());
@@ -156,6 +159,53 @@ void MainWindow::createDocks()
         m_preview->solverDock()->raise();
     });
     m_properties->raise();
+}
+
+// --- layout ------------------------------------------------------------------
+
+void MainWindow::showEvent(QShowEvent* event)
+{
+    QMainWindow::showEvent(event);
+    if (m_layoutPending) {
+        m_layoutPending = false;
+        sizeDocksToContent();
+    }
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState);
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        dock->setFloating(false);
+    m_properties->raise();
+    m_materials->raise();
+    sizeDocksToContent();
+}
+
+void MainWindow::sizeDocksToContent()
+{
+    const int width = this->width();
+    const int height = this->height();
+    // The scene tree: its id column as wide as the longest top-level id (a
+    // collapsed tree shows only those), the dock as wide as that column and
+    // the tree's frame, but not past a fifth of the window.
+    QTreeView* tree = m_sceneTree->view();
+    tree->resizeColumnToContents(SceneTreeModel::IdColumn);
+    const int idColumn = std::max(tree->header()->sectionSize(SceneTreeModel::IdColumn), 60);
+    const int frame = tree->frameWidth() * 2 + m_sceneTree->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 16;
+    int left = std::clamp(idColumn + frame, 160, std::max(160, width / 5));
+    // The right column: the properties, materials and solver panels.
+    int right = std::clamp(width * 22 / 100, 280, 440);
+    // The viewport keeps at least 60 % of the width.
+    const int most = width * 40 / 100 - 8;
+    if (left + right > most) {
+        right = std::max(220, most - left);
+        left = std::max(120, most - right);
+    }
+    resizeDocks({m_sceneTree}, {left}, Qt::Horizontal);
+    resizeDocks({m_properties}, {right}, Qt::Horizontal);
+    resizeDocks({m_sceneTree, m_historyDock}, {3, 1}, Qt::Vertical);
+    resizeDocks({m_diagnostics}, {std::clamp(height / 7, 100, 200)}, Qt::Vertical);
 }
 
 // --- settings ------------------------------------------------------------------
@@ -169,7 +219,8 @@ void MainWindow::readSettings()
     QSettings settings;
     if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
         resize(1280, 800);
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    // A layout the user left is kept; the first start sizes the panels.
+    m_layoutPending = !restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     settings.beginGroup(QStringLiteral("view"));
     m_actions.cullBackFaces->setChecked(settings.value(QStringLiteral("cullBackFaces"), true).toBool());
     m_actions.showGrid->setChecked(settings.value(QStringLiteral("showGrid"), true).toBool());

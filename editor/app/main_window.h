@@ -68,8 +68,13 @@ public:
     // Looks for recovery files of crashed sessions and offers to restore one.
     void offerRecovery();
 
+    // View > Reset Layout: every panel where it is at first start, sized to
+    // its content within the window (sizeDocksToContent has the rule).
+    void resetLayout();
+
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createActions();
@@ -79,6 +84,10 @@ private:
     void readSettings();
     void writeSettings();
     void applyPreferences();
+    // The panels' widths and heights for the window's size: the scene tree as
+    // wide as its top-level ids, the right column about a fifth of the width,
+    // the viewport at least 60 % of it.
+    void sizeDocksToContent();
 
     void newScene();
     void open();
@@ -115,6 +124,9 @@ private:
     QDockWidget* m_historyDock = nullptr;
     QUndoView* m_history = nullptr;
 
+    QByteArray m_defaultState;   // the panels as createDocks() placed them
+    bool m_layoutPending = true; // no saved layout: size the panels when first shown
+
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QLabel* m_statistics = nullptr;
@@ -127,7 +139,7 @@ private:
         QAction *solid, *wireframe, *normals;
         QAction *pickObjects, *pickParts, *pickFaces;
         QAction *gizmoMove, *gizmoRotate, *gizmoScale, *snap;
-        QAction *about, *aboutQt;
+        QAction *about, *aboutQt, *resetLayout;
     } m_actions{};
     QList<QAction*> m_standardViewActions;
 };

@@ -169,6 +169,9 @@ void MainWindow::createActions()
     a.about->setMenuRole(QAction::AboutRole);
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
     a.aboutQt = makeAction(this, tr("About &Qt"));
+    a.resetLayout = makeAction(this, tr("&Reset Layout"));
+    a.resetLayout->setStatusTip(tr("Put every panel back where it was at first start, sized to the window"));
+    connect(a.resetLayout, &QAction::triggered, this, &MainWindow::resetLayout);
     a.aboutQt->setMenuRole(QAction::AboutQtRole);
     connect(a.aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
 
@@ -249,6 +252,7 @@ void MainWindow::createMenus()
     QMenu* docks = m_viewMenu->addMenu(tr("&Panels"));
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         docks->addAction(dock->toggleViewAction());
+    m_viewMenu->addAction(a.resetLayout);
 
     m_preview->populateMenu(menuBar()->addMenu(tr("&Solve")));
 

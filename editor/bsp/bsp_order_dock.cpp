@@ -7,6 +7,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -62,15 +63,19 @@ BspOrderDock::BspOrderDock(BspAuthoring* authoring, SceneDocument* document, QWi
     m_list->setSelectionMode(QAbstractItemView::SingleSelection);
     m_list->setToolTip(tr("Faces used as BSP roots, first = root of the region's tree; drag to reorder"));
     orderLayout->addWidget(m_list, 1);
-    auto* buttons = new QHBoxLayout;
+    // Two rows of two: one row of four would make the whole right-hand
+    // column of panels wide enough to crowd the viewport on a laptop.
+    auto* buttons = new QGridLayout;
     m_top = new QPushButton(tr("Move to Top"), orderPage);
     m_remove = new QPushButton(tr("Remove"), orderPage);
     m_pick = new QPushButton(tr("Pick in Viewport"), orderPage);
     m_pick->setCheckable(true);
     m_pick->setToolTip(tr("Click faces in the viewport to add them at the end of the order; Esc ends"));
     m_insertSelected = new QPushButton(tr("Insert Selected"), orderPage);
-    for (QPushButton* b : {m_top, m_remove, m_pick, m_insertSelected})
-        buttons->addWidget(b);
+    buttons->addWidget(m_top, 0, 0);
+    buttons->addWidget(m_remove, 0, 1);
+    buttons->addWidget(m_pick, 1, 0);
+    buttons->addWidget(m_insertSelected, 1, 1);
     orderLayout->addLayout(buttons);
 
     m_figures = new QTableWidget(3, 5, orderPage);

@@ -23,6 +23,10 @@ VectorEditor::VectorEditor(QWidget* parent, double min, double max, int decimals
         box->setToolTip(QString::fromLatin1(axes[i]));
         box->setAccessibleName(QString::fromLatin1(axes[i]));
         box->setMinimumWidth(60);
+        // The range's widest number (an emission up to 10^7) would make the
+        // row, and the whole right-hand panel column, wide: the boxes share
+        // what the panel has instead, down to 60 px each.
+        box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         // Only the component the user changed: the boxes show the others
         // rounded to their decimals (a reflectance of 0.7312 reads 0.731),
         // and the edit must not change values nobody touched.
