@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -23,6 +24,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace regio::importer {
@@ -117,22 +119,73 @@ std::optional<std::string> implausibleOffHeader(const std::string& path)
            std::to_string(static_cast<long long>(size)) + " bytes";
 }
 
-// A PLY file's header ends at an "end_header" line. Debian's Assimp (5.2)
-// reads a header without one for ever (found by the importer fuzzer: a
-// header of 300 bytes ending "end0"), so such a file is refused first. A
-// header is ASCII text even in binary PLY files, and short.
-std::optional<std::string> unendedPlyHeader(const std::string& path)
+// Assimp's PLY reader reads past the end of a file that is cut short, or
+// whose header never ends, for ever (it seeks at the end of the file in a
+// loop), so such files are refused before Assimp sees them: a header must
+// end with an end_header line within its first 64 KiB, and an ASCII file
+// must hold at least the element lines its header announces.
+std::optional<std::string> plyProblem(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     std::string header(64 * 1024, '\0');
     in.read(header.data(), static_cast<std::streamsize>(header.size()));
     header.resize(static_cast<std::size_t>(in.gcount()));
-    if (!(header.starts_with("ply\n") || header.starts_with("ply\r\n")))
+    // Assimp takes a file for PLY by its extension or by "ply" and any
+    // white space at its start ("ply   \n" too).
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool plyMagic =
+        header.starts_with("ply") && header.size() > 3 && std::isspace(static_cast<unsigned char>(header[3])) != 0;
+    if (extension != ".ply" && !plyMagic)
         return std::nullopt;
-    for (std::size_t at = header.find("end_header"); at != std::string::npos; at = header.find("end_header", at + 1))
-        if (header[at - 1] == '\n')
-            return std::nullopt;
-    return "'" + path + "' is a PLY file whose header never ends (it has no end_header line)";
+    const auto trimmed = [](std::string line) {
+        const std::size_t begin = line.find_first_not_of(" \t\r");
+        const std::size_t end = line.find_last_not_of(" \t\r");
+        return begin == std::string::npos ? std::string() : line.substr(begin, end + 1 - begin);
+    };
+    std::istringstream lines(header);
+    std::string line;
+    bool ascii = false;
+    bool ended = false;
+    std::uint64_t elements = 0;
+    std::size_t headerBytes = 0;
+    while (std::getline(lines, line)) {
+        headerBytes += line.size() + 1;
+        const std::string t = trimmed(line);
+        if (t == "end_header") {
+            ended = true;
+            break;
+        }
+        std::istringstream words(t);
+        std::string keyword, name, count;
+        words >> keyword;
+        if (keyword == "format") {
+            words >> name;
+            ascii = name == "ascii";
+        } else if (keyword == "element") {
+            words >> name >> count;
+            std::uint64_t n = 0;
+            const auto [rest, error] = std::from_chars(count.data(), count.data() + count.size(), n);
+            if (error == std::errc() && rest == count.data() + count.size())
+                elements = std::min<std::uint64_t>(elements + n, std::uint64_t{1} << 62);
+        }
+    }
+    if (!ended)
+        return "'" + path + "' is a PLY file whose header never ends (it has no end_header line)";
+    if (!ascii || elements == 0)
+        return std::nullopt;
+    // One line an element in an ASCII file: count them, as far as needed.
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(headerBytes));
+    std::uint64_t dataLines = 0;
+    while (dataLines < elements && std::getline(in, line))
+        if (!trimmed(line).empty())
+            ++dataLines;
+    if (dataLines < elements)
+        return "'" + path + "' is a PLY file cut short: its header announces " + std::to_string(elements) +
+               " element lines, the file has " + std::to_string(dataLines);
+    return std::nullopt;
 }
 
 // What a glTF material says that Debian's Assimp (5.2) does not pass on,
@@ -257,8 +310,8 @@ model::Result<ReadModel> readModelFile(const std::string& path, const ReadOption
         return model::makeError("'" + path + "' is not a readable file");
     if (const auto claim = implausibleOffHeader(path))
         return model::makeError(*claim);
-    if (const auto unended = unendedPlyHeader(path))
-        return model::makeError(*unended);
+    if (const auto broken = plyProblem(path))
+        return model::makeError(*broken);
     Assimp::Importer importer;
     // No post-processing beyond the check of Assimp's own output: its
     // triangulation step aborts the process on some broken files (a failed

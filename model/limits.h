@@ -1,7 +1,7 @@
 #pragma once
 // The limits of a scene that Regio enforces when it reads one, so that a
 // mistake (a model in micrometres, a typo of exponent) gets a message
-// instead of garbage geometry or exhausted memory. docs/guide.md lists them.
+// instead of garbage geometry or exhausted memory. docs/reliability.md lists them.
 namespace regio::model {
 
 // Every coordinate (vertices, region corners, the camera) lies within

@@ -101,6 +101,10 @@
         <source>--screenshot draws the editor&apos;s window and needs a display, real or virtual: run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...).</source>
         <translation>--screenshot kreslí okno editoru a potřebuje displej, skutečný nebo virtuální: spusťte jej na ploše nebo pod Xvfb (xvfb-run -a regio --screenshot ...).</translation>
     </message>
+    <message>
+        <source>there is no panel %1</source>
+        <translation>panel %1 neexistuje</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::Authoring</name>
@@ -658,6 +662,10 @@
     <message>
         <source>User interface language for this run (en, cs, de).</source>
         <translation>Jazyk uživatelského rozhraní pro toto spuštění (en, cs, de).</translation>
+    </message>
+    <message>
+        <source>With --screenshot: bring the panel &lt;name&gt; to the front first (Materials, Regions, BspOrder, Solver, Properties).</source>
+        <translation>S --screenshot: nejprve přenést do popředí panel &lt;name&gt; (Materials, Regions, BspOrder, Solver, Properties).</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1529,22 @@ Soubor na disku zůstal beze změny.</translation>
     <message>
         <source>Put every panel back where it was at first start, sized to the window</source>
         <translation>Vrátit všechny panely tam, kde byly při prvním spuštění, s velikostí podle okna</translation>
+    </message>
+    <message>
+        <source>User &amp;Guide</source>
+        <translation>Uživatelská &amp;příručka</translation>
+    </message>
+    <message>
+        <source>Open the user guide</source>
+        <translation>Otevřít uživatelskou příručku</translation>
+    </message>
+    <message>
+        <source>No program opens %1 on this system</source>
+        <translation>Žádný program v tomto systému neotevře %1</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>&amp;Ukázky</translation>
     </message>
 </context>
 <context>

@@ -101,6 +101,10 @@
         <source>--screenshot draws the editor&apos;s window and needs a display, real or virtual: run it on a desktop or under Xvfb (xvfb-run -a regio --screenshot ...).</source>
         <translation>--screenshot zeichnet das Editorfenster und benötigt einen echten oder virtuellen Bildschirm: Starten Sie den Editor auf einem Desktop oder unter Xvfb (xvfb-run -a regio --screenshot ...).</translation>
     </message>
+    <message>
+        <source>there is no panel %1</source>
+        <translation>es gibt kein Bedienfeld %1</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::Authoring</name>
@@ -649,6 +653,10 @@
     <message>
         <source>User interface language for this run (en, cs, de).</source>
         <translation>Sprache der Benutzeroberfläche für diesen Aufruf (en, cs, de).</translation>
+    </message>
+    <message>
+        <source>With --screenshot: bring the panel &lt;name&gt; to the front first (Materials, Regions, BspOrder, Solver, Properties).</source>
+        <translation>Mit --screenshot: zuerst das Bedienfeld &lt;name&gt; nach vorn holen (Materials, Regions, BspOrder, Solver, Properties).</translation>
     </message>
 </context>
 <context>
@@ -1506,6 +1514,22 @@ Die Datei auf dem Datenträger ist unverändert.</translation>
     <message>
         <source>Put every panel back where it was at first start, sized to the window</source>
         <translation>Alle Bedienfelder wieder wie beim ersten Start anordnen, an die Fenstergröße angepasst</translation>
+    </message>
+    <message>
+        <source>User &amp;Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>Open the user guide</source>
+        <translation>Das Benutzerhandbuch öffnen</translation>
+    </message>
+    <message>
+        <source>No program opens %1 on this system</source>
+        <translation>Kein Programm auf diesem System öffnet %1</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>Bei&amp;spiele</translation>
     </message>
 </context>
 <context>

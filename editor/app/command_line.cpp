@@ -45,6 +45,13 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
                                     "With --screenshot: solve the radiosity preview with exactly <n> shooting "
                                     "steps first and show it."),
         QStringLiteral("n"));
+    const QCommandLineOption panel(
+        QStringLiteral("panel"),
+        QCoreApplication::translate("regio::editor::CommandLine",
+                                    "With --screenshot: bring the panel <name> to the front first (Materials, "
+                                    "Regions, BspOrder, Solver, Properties)."),
+        QStringLiteral("name"));
+    parser.addOption(panel);
     parser.addOption(previewIterations);
     parser.addOption(screenshot);
     parser.addOption(size);
@@ -88,6 +95,7 @@ CommandLineOptions parseCommandLine(const QStringList& arguments)
         options.error = QCoreApplication::translate("regio::editor::CommandLine", "--screenshot needs a file name");
         return options;
     }
+    options.panel = parser.value(panel);
     if (parser.isSet(size)) {
         options.size = parseSize(parser.value(size));
         if (!options.size.isValid()) {

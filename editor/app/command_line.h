@@ -1,5 +1,5 @@
 #pragma once
-// `regio [SCENE.json] [--screenshot FILE.png] [--size WxH] [--preview-iterations N]`
+// `regio [SCENE.json] [--screenshot FILE.png] [--size WxH] [--preview-iterations N] [--panel NAME]`
 #include <QSize>
 #include <QString>
 #include <QStringList>
@@ -12,6 +12,7 @@ struct CommandLineOptions {
     QSize size;                 // window size; invalid = the saved or default size
     QString language;           // --lang: overrides the preference for this run
     int previewIterations = -1; // --preview-iterations: shoot N times before the screenshot (-1 = no preview)
+    QString panel;              // --panel: the panel to bring to the front for the screenshot (its object name)
     bool ok = true;             // false: `error` says why, exit 2
     QString error;
     bool exitNow = false; // --help or --version was answered

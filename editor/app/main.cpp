@@ -9,8 +9,11 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
+#include <QElapsedTimer>
 #include <QSettings>
 #include <QSurfaceFormat>
+#include <QThread>
 #include <QTimer>
 
 #include <cstdio>
@@ -40,6 +43,23 @@ int runScreenshot(const CommandLineOptions& options)
         }
     }
     window.show();
+    if (!options.panel.isEmpty()) {
+        auto* dock = window.findChild<QDockWidget*>(options.panel + QStringLiteral("Dock"));
+        if (dock == nullptr) {
+            printError(QCoreApplication::translate("main", "there is no panel %1").arg(options.panel));
+            return 2;
+        }
+        dock->show();
+        dock->raise();
+        // The Regions and BSP Order panels' figures come from the solver's
+        // preparation on a worker thread a moment after the scene opens.
+        QElapsedTimer waited;
+        waited.start();
+        while (waited.elapsed() < 1500) {
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+            QThread::msleep(10);
+        }
+    }
     if (options.previewIterations >= 0) {
         QString error;
         if (!solvePreviewForScreenshot(window, options.previewIterations, &error)) {

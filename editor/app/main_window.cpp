@@ -205,6 +205,9 @@ void MainWindow::sizeDocksToContent()
     resizeDocks({m_sceneTree}, {left}, Qt::Horizontal);
     resizeDocks({m_properties}, {right}, Qt::Horizontal);
     resizeDocks({m_sceneTree, m_historyDock}, {3, 1}, Qt::Vertical);
+    // The properties and the solver above the materials, regions and BSP
+    // orders: the Solver panel's settings want the height.
+    resizeDocks({m_properties, m_materials}, {11, 9}, Qt::Vertical);
     resizeDocks({m_diagnostics}, {std::clamp(height / 7, 100, 200)}, Qt::Vertical);
 }
 

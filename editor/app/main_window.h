@@ -139,7 +139,7 @@ private:
         QAction *solid, *wireframe, *normals;
         QAction *pickObjects, *pickParts, *pickFaces;
         QAction *gizmoMove, *gizmoRotate, *gizmoScale, *snap;
-        QAction *about, *aboutQt, *resetLayout;
+        QAction *about, *aboutQt, *resetLayout, *userGuide;
     } m_actions{};
     QList<QAction*> m_standardViewActions;
 };

@@ -1,5 +1,6 @@
 // MainWindow's actions, menus and toolbars.
 #include "editor/app/main_window.h"
+#include "editor/app/sample_scenes.h"
 #include "editor/bsp/bsp_authoring.h"
 #include "editor/docks/diagnostics_dock.h"
 #include "editor/docks/materials_dock.h"
@@ -13,11 +14,15 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUrl>
 
 namespace regio::editor {
 
@@ -169,6 +174,15 @@ void MainWindow::createActions()
     a.about->setMenuRole(QAction::AboutRole);
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
     a.aboutQt = makeAction(this, tr("About &Qt"));
+    a.userGuide = makeAction(this, tr("User &Guide"));
+    a.userGuide->setShortcut(QKeySequence::HelpContents);
+    a.userGuide->setStatusTip(tr("Open the user guide"));
+    connect(a.userGuide, &QAction::triggered, this, [this] {
+        const QString guide = userGuideFile();
+        if (!QDesktopServices::openUrl(QUrl::fromLocalFile(guide)))
+            statusBar()->showMessage(tr("No program opens %1 on this system").arg(QDir::toNativeSeparators(guide)),
+                                     10000);
+    });
     a.resetLayout = makeAction(this, tr("&Reset Layout"));
     a.resetLayout->setStatusTip(tr("Put every panel back where it was at first start, sized to the window"));
     connect(a.resetLayout, &QAction::triggered, this, &MainWindow::resetLayout);
@@ -257,6 +271,11 @@ void MainWindow::createMenus()
     m_preview->populateMenu(menuBar()->addMenu(tr("&Solve")));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(a.userGuide);
+    m_authoring->populateExamplesMenu(help->addMenu(tr("E&xamples")), [this](const QString& path) {
+        if (maybeSave())
+            openFile(path);
+    });
     help->addAction(m_authoring->navigationHelpAction());
     help->addSeparator();
     help->addAction(a.about);

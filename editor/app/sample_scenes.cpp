@@ -16,4 +16,14 @@ QString sampleScenesFolder(const QString& applicationDir)
 
 QString sampleScenesFolder() { return sampleScenesFolder(QCoreApplication::applicationDirPath()); }
 
+QString userGuideFile(const QString& applicationDir)
+{
+    const QString installed = QDir::cleanPath(applicationDir + QStringLiteral("/../share/doc/regio-solve/guide.md"));
+    if (QFileInfo(installed).isFile())
+        return installed;
+    return QStringLiteral(REGIO_DOCS "/guide.md");
+}
+
+QString userGuideFile() { return userGuideFile(QCoreApplication::applicationDirPath()); }
+
 } // namespace regio::editor

@@ -1,5 +1,6 @@
 #pragma once
-// Where the editor finds its sample scenes (File > Open Example): beside an
+// Where the editor finds its sample scenes (File > Open Example, Help >
+// Examples) and its user guide: beside an
 // installed editor in ../share/regio/scenes (as `cmake --install` and the
 // Debian package put them), else in the source tree it was built from.
 #include <QString>
@@ -11,5 +12,10 @@ QString sampleScenesFolder(const QString& applicationDir);
 
 // The same for the running editor (QCoreApplication::applicationDirPath()).
 QString sampleScenesFolder();
+
+// The user guide (Help > User Guide): docs/guide.md as installed with the
+// other documents in ../share/doc/regio-solve, else the source tree's.
+QString userGuideFile(const QString& applicationDir);
+QString userGuideFile();
 
 } // namespace regio::editor

@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -62,9 +63,13 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
 
-    auto* controls = new QHBoxLayout;
-    for (QAction* a : {actions.run, actions.continueSolve, actions.pause, actions.stop, actions.reset})
-        controls->addWidget(buttonFor(a, content));
+    // Three buttons a row: the panel shares a narrow column with others.
+    auto* controls = new QGridLayout;
+    int slot = 0;
+    for (QAction* a : {actions.run, actions.continueSolve, actions.pause, actions.stop, actions.reset}) {
+        controls->addWidget(buttonFor(a, content), slot / 3, slot % 3);
+        ++slot;
+    }
     layout->addLayout(controls);
     m_status = new QLabel(content);
     m_status->setObjectName(QStringLiteral("solveStatus"));

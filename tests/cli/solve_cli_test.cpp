@@ -405,11 +405,11 @@ TEST(SolveOutputs, RefusesABadPictureSize)
 }
 
 // The guide's table of report fields ("The report of one scene is one JSON
-// object", docs/guide.md) names every field a report has, and the keys of its
+// object", docs/reference.md) names every field a report has, and the keys of its
 // objects.
 TEST(SolveCommand, TheGuideDocumentsEveryFieldOfTheReport)
 {
-    const std::string readme = readText(fs::path(REGIO_SOURCE_DIR) / "docs" / "guide.md");
+    const std::string readme = readText(fs::path(REGIO_SOURCE_DIR) / "docs" / "reference.md");
     const size_t start = readme.find("The report of one scene is one JSON object");
     ASSERT_NE(start, std::string::npos) << "the guide's report section moved";
     // Rows of the table: backticked names in the first column, and in the

@@ -73,8 +73,8 @@ std::vector<uint32_t> readIndices(const json& doc, const std::string& bin, const
     std::vector<uint32_t> out;
     for (size_t i = 0; i < accessor["count"].get<size_t>(); ++i) {
         if (type == 5123)
-            out.push_back(static_cast<unsigned char>(bin[offset + 2 * i]) |
-                          (static_cast<unsigned char>(bin[offset + 2 * i + 1]) << 8));
+            out.push_back(uint32_t{static_cast<unsigned char>(bin[offset + 2 * i])} |
+                          (uint32_t{static_cast<unsigned char>(bin[offset + 2 * i + 1])} << 8u));
         else
             out.push_back(u32(bin, offset + 4 * i));
     }

@@ -1,12 +1,14 @@
 // The main window: title, file workflow, recent files, settings.
 #include "editor/app/main_window.h"
 #include "editor/app/recent_files.h"
+#include "editor/app/sample_scenes.h"
 #include "editor/document/commands/object_commands.h"
 #include "support/editor_documents.h"
 #include "support/qt_test_registry.h"
 
 #include <QAction>
 #include <QFile>
+#include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -51,6 +53,34 @@ private slots:
     {
         QSettings settings;
         settings.clear();
+    }
+
+    void theHelpMenuOffersTheGuideAndTheExamples()
+    {
+        auto window = makeWindow();
+        QMenu* help = nullptr;
+        for (QAction* action : window->menuBar()->actions())
+            if (action->text() == MainWindow::tr("&Help"))
+                help = action->menu();
+        QVERIFY(help);
+        QAction* guide = nullptr;
+        QMenu* examples = nullptr;
+        for (QAction* action : help->actions()) {
+            if (action->text() == MainWindow::tr("User &Guide"))
+                guide = action;
+            if (action->menu() && action->text() == MainWindow::tr("E&xamples"))
+                examples = action->menu();
+        }
+        QVERIFY(guide);
+        QCOMPARE(guide->shortcut(), QKeySequence(QKeySequence::HelpContents));
+        QVERIFY(QFile::exists(userGuideFile()));
+        QVERIFY(examples);
+        QStringList names;
+        for (QAction* action : examples->actions())
+            names << action->text();
+        QCOMPARE(names, (QStringList{QStringLiteral("cornell-box.json"), QStringLiteral("two-lights-room.json")}));
+        examples->actions().first()->trigger();
+        QVERIFY(window->document()->filePath().endsWith(QStringLiteral("cornell-box.json")));
     }
 
     void theTitleNamesTheFileAndMarksUnsavedChanges()
