@@ -17,6 +17,10 @@ enum class UpAxis { Y, Z };
 struct ReadOptions {
     double scale = 1.0; // model units to metres
     UpAxis up = UpAxis::Y;
+    // importModel reads through readModelFileIsolated (a child process,
+    // isolated_read.h) unless this is false: the fuzz harness reads in its
+    // own process, where the fuzzer sees Assimp's code.
+    bool separateProcess = true;
 };
 
 struct ReadCounts {

@@ -1,5 +1,7 @@
 #include "importer/import_model.h"
 
+#include "importer/isolated_read.h"
+
 #include "model/geometry/geometry.h"
 #include "model/validation/validation.h"
 #include "solver/authoring/region_proposal.h"
@@ -38,7 +40,8 @@ void fitSolverSettings(model::Scene& scene)
 
 model::Result<Imported> importModel(const std::string& path, const ImportOptions& options)
 {
-    auto read = readModelFile(path, options.read);
+    auto read =
+        options.read.separateProcess ? readModelFileIsolated(path, options.read) : readModelFile(path, options.read);
     if (!read)
         return read.diagnostics();
     model::Diagnostics warnings = read.diagnostics();

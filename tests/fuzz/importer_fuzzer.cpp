@@ -25,6 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     regio::importer::ImportOptions options;
     options.autoRegions = (data[0] & 8) != 0;
+    options.read.separateProcess = false; // Assimp in this process, where the fuzzer sees its code
     const regio::model::Result<regio::importer::Imported> imported = regio::importer::importModel(path, options);
     std::remove(path.c_str());
     if (imported && regio::model::hasErrors(regio::model::validateScene(imported->scene)))
