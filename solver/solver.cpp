@@ -113,6 +113,16 @@ bool Solver::refineIfDue(const std::atomic<bool>* cancel)
 {
     if (!m_refinement || (!m_handOverPending && !m_refinement->roundDue()))
         return true;
+    // Seen from other threads while the round works (the editor's status).
+    struct Refining {
+        std::atomic<bool>& flag;
+        explicit Refining(std::atomic<bool>& f)
+            : flag(f)
+        {
+            flag.store(true);
+        }
+        ~Refining() { flag.store(false); }
+    } busy(m_refining);
     const auto start = Clock::now();
     if (!m_handOverPending) {
         // Only this thread writes the shooter's arrays: reading them unlocked is safe.

@@ -77,6 +77,9 @@ public:
     // while run() works.
     void extendIterationLimit(int shots);
 
+    // A refinement round (§5.7) is under way; from any thread.
+    bool refining() const { return m_refining.load(); }
+
     bool converged() const;
     SolverStats stats() const;
     SolutionSnapshot snapshot() const;
@@ -94,7 +97,8 @@ private:
     void noteShot();
 
     std::unique_ptr<AdaptiveRefinement> m_refinement; // empty when adaptive subdivision is off
-    bool m_handOverPending = false;                   // a round split elements; the shooter has not got them yet
+    bool m_handOverPending = false;
+    std::atomic<bool> m_refining{false}; // a round split elements; the shooter has not got them yet
 
     model::SolverSettings m_settings;
     PreparedScene m_prepared;

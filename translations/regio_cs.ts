@@ -1903,6 +1903,10 @@ Soubor na disku zůstal beze změny.</translation>
         <source>Converged: %1</source>
         <translation>Zkonvergovalo: %1</translation>
     </message>
+    <message>
+        <source> (refining the mesh…)</source>
+        <translation> (zjemňuje se síť…)</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::PreviewExport</name>

@@ -1888,6 +1888,10 @@ Die Datei auf dem Datenträger ist unverändert.</translation>
         <source>Converged: %1</source>
         <translation>Konvergiert: %1</translation>
     </message>
+    <message>
+        <source> (refining the mesh…)</source>
+        <translation> (das Netz wird verfeinert…)</translation>
+    </message>
 </context>
 <context>
     <name>regio::editor::PreviewExport</name>

@@ -376,7 +376,11 @@ QString PreviewController::statusText() const
     switch (state) {
     case PreviewState::Idle: return tr("Preview: not solved");
     case PreviewState::Preparing: text = tr("Preview: preparing the scene…"); break;
-    case PreviewState::Running: text = f ? tr("Solving: %1").arg(figures()) : tr("Solving…"); break;
+    case PreviewState::Running:
+        text = f ? tr("Solving: %1").arg(figures()) : tr("Solving…");
+        if (m_runner->refining())
+            text += tr(" (refining the mesh…)");
+        break;
     case PreviewState::Paused: text = f ? tr("Paused: %1").arg(figures()) : tr("Paused"); break;
     case PreviewState::Finished:
         if (!f) {
@@ -415,8 +419,9 @@ void PreviewController::updateStatus()
     m_progress->setVisible(working);
     if (working) {
         const int percent = progressPercent();
-        m_progress->setRange(0, percent < 0 ? 0 : 100); // 0..0: busy
-        if (percent >= 0)
+        const bool busy = percent < 0 || m_runner->refining();
+        m_progress->setRange(0, busy ? 0 : 100); // 0..0: busy
+        if (!busy)
             m_progress->setValue(percent);
     }
     updateActions();

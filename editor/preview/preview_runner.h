@@ -39,6 +39,8 @@ public:
     void stop();
     // Goes on with a finished solve that stopped short of convergence.
     void continueSolve();
+    // A refinement round of the running solve is under way.
+    bool refining() const { return m_session && m_state == PreviewState::Running && m_session->refining(); }
     // Drops the solve and its solution.
     void reset();
 

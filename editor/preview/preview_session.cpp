@@ -62,6 +62,12 @@ void PreviewSession::stop()
     m_wake.notify_all();
 }
 
+bool PreviewSession::refining() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_solver && m_solver->refining();
+}
+
 bool PreviewSession::continueRun()
 {
     std::lock_guard<std::mutex> lock(m_mutex);

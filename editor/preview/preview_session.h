@@ -91,6 +91,8 @@ public:
     // or stopped by the user): goes on from there, up to the scene's
     // maxIterations shots more. False when there is nothing to continue.
     bool continueRun();
+    // The solver is refining its mesh between two shots (no frames come then).
+    bool refining() const;
     // The worker has returned (after quit, or when preparation failed).
     bool exited() const { return m_exited.load(); }
     bool finished() const;

@@ -22,6 +22,7 @@
 #include "support/preview_waits.h"
 #include "support/qt_test_registry.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -333,6 +334,28 @@ private slots:
         const solver::SolverStats once = straight.frame()->snapshot.stats;
         QCOMPARE(continued.elements, once.elements);
         QCOMPARE(continued.unshotRatio, once.unshotRatio);
+    }
+
+    // A refinement round brings no frame for up to a few hundred ms: the
+    // status says what the solver is doing and the bar turns busy.
+    void aRefinementRoundShowsInTheStatus()
+    {
+        auto window = makeWindow();
+        window->document()->reset(test::bigRoundsRoom());
+        PreviewController* preview = window->preview();
+        auto* progress = window->findChild<QProgressBar*>(QStringLiteral("previewProgress"));
+        preview->run();
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Running));
+        bool seen = false;
+        QElapsedTimer clock;
+        clock.start();
+        while (!seen && clock.elapsed() < 60000) {
+            QTest::qWait(5);
+            seen = preview->statusText().contains(QStringLiteral("(refining the mesh…)")) && progress->maximum() == 0;
+        }
+        preview->runner()->stop();
+        QVERIFY2(seen, "no refinement round showed in the status");
+        QVERIFY(waitForState(*preview->runner(), PreviewState::Finished));
     }
 
     void aSolveStoppedByTheUserSaysSoAndAConvergedOneOffersNoContinue()
