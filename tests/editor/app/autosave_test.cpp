@@ -113,12 +113,15 @@ private slots:
         QTemporaryDir dir;
         const QString original = dir.filePath(QStringLiteral("room.json"));
         model::Scene crashed;
+        // Never deleted while the "editor" runs: a crash runs no destructor.
+        SceneDocument* document = nullptr;
+        Autosave* autosave = nullptr;
         {
-            auto* document = new SceneDocument;
+            document = new SceneDocument;
             model::Diagnostics diagnostics;
             QVERIFY(document->open(test::sampleFile("two-lights-room"), diagnostics));
             QVERIFY(document->save(original));
-            auto* autosave = new Autosave(document, dir.filePath(QStringLiteral("recovery")));
+            autosave = new Autosave(document, dir.filePath(QStringLiteral("recovery")));
             document->push(new RemoveObject(document, "boxes"));
             document->push(new SetObjectName(document, "table", "Kitchen table"));
             QVERIFY(autosave->saveNow());
@@ -146,6 +149,9 @@ private slots:
         QVERIFY(restored.isModified());
         // Restored once: it is gone from the recovery folder.
         QVERIFY(Autosave::findOrphans(dir.filePath(QStringLiteral("recovery"))).isEmpty());
+        // The crashed editor's memory, which a real crash gives back to the system.
+        delete autosave;
+        delete document;
     }
 
     void anUnreadableRecoveryFileIsReportedAndChangesNothing()
