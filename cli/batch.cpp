@@ -239,7 +239,7 @@ void Batch::solveOne(int index, SceneJob& job)
     const solver::StopReason stop = s.run(
         [&](const solver::SolverStats& stats) {
             m_progress.shot(job.name, stats.iterations, stats.unshotRatio,
-                            workPercent(stats.iterations, maxIterations, stats.unshotRatio, convergence));
+                            solver::workPercent(stats.iterations, maxIterations, stats.unshotRatio, convergence));
         },
         InterruptGuard::flag());
     const solver::SolverStats stats = s.stats();

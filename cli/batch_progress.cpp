@@ -3,21 +3,9 @@
 
 #include "model/io/printable.h"
 
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 
 namespace regio::cli {
-
-int workPercent(int iteration, int maxIterations, double unshot, double convergence)
-{
-    double done = maxIterations > 0 ? static_cast<double>(iteration) / maxIterations : 0.0;
-    if (convergence > 0.0 && convergence < 1.0 && unshot > 0.0 && unshot < 1.0)
-        done = std::max(done, std::log(unshot) / std::log(convergence));
-    else if (convergence > 0.0 && unshot <= convergence)
-        done = 1.0;
-    return static_cast<int>(std::floor(100.0 * std::clamp(done, 0.0, 1.0)));
-}
 
 BatchProgress::BatchProgress(ProgressStyle style, bool quiet, int sceneCount)
     : m_style(style)

@@ -47,9 +47,4 @@ private:
     std::map<std::string, int> m_percent;
 };
 
-// Percent of a solve's work done: the larger of the iterations against their
-// limit and the unshot power's way down to the convergence target (on a log
-// scale, since progressive shooting drops it about geometrically).
-int workPercent(int iteration, int maxIterations, double unshot, double convergence);
-
 } // namespace regio::cli

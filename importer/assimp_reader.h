@@ -26,11 +26,15 @@ struct ReadOptions {
 struct ReadCounts {
     std::size_t meshes = 0;
     std::size_t pointsAndLines = 0; // primitives that are not triangles, left out
+
+    bool operator==(const ReadCounts&) const = default;
 };
 
 struct ReadModel {
     TriangleSoup soup;
     ReadCounts counts;
+
+    bool operator==(const ReadModel&) const = default;
 };
 
 // Refused (with Assimp's reason) when the file cannot be read or holds no

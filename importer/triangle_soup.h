@@ -19,6 +19,8 @@ struct SoupMaterial {
     Rgb diffuse{0.5};  // the diffuse colour (a texture's mean colour where there is one)
     Rgb emission{0.0}; // emissive colour times its strength
     bool textured = false;
+
+    bool operator==(const SoupMaterial&) const = default;
 };
 
 // A mesh as the file has it: the unit within which triangles merge into
@@ -27,12 +29,16 @@ struct SoupMaterial {
 struct SoupMesh {
     std::string name; // the node's name, else the mesh's; may be empty or repeat
     int object = -1;  // the node it belongs to, counted from 0; -1: a node of its own
+
+    bool operator==(const SoupMesh&) const = default;
 };
 
 struct SoupTriangle {
     std::array<int, 3> corners{}; // indices into positions, counter-clockwise seen from the front
     int material = 0;             // index into materials
     int mesh = 0;                 // index into meshes
+
+    bool operator==(const SoupTriangle&) const = default;
 };
 
 struct TriangleSoup {
@@ -40,6 +46,8 @@ struct TriangleSoup {
     std::vector<SoupTriangle> triangles;
     std::vector<SoupMaterial> materials;
     std::vector<SoupMesh> meshes;
+
+    bool operator==(const TriangleSoup&) const = default;
 };
 
 } // namespace regio::importer

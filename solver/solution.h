@@ -18,6 +18,12 @@ using model::Vec3;
 enum class StopReason { None, Converged, MaxIterations, NothingToShoot, Cancelled };
 const char* stopReasonName(StopReason reason);
 
+// Percent of a solve's work done: the larger of the iterations against their
+// limit and the unshot power's way down to the convergence target (on a log
+// scale, since progressive shooting drops it about geometrically). The
+// batch's progress lines and the editor's progress bar show it.
+int workPercent(int iteration, int maxIterations, double unshot, double convergence);
+
 struct SolverStats {
     int iterations = 0;
     int renderedShots = 0; // shots that rendered a hemicube; the others reused a kept row

@@ -27,7 +27,6 @@
 #include <QToolBar>
 
 #include <algorithm>
-#include <cmath>
 
 namespace regio::editor {
 
@@ -433,13 +432,7 @@ int PreviewController::progressPercent() const
     if (!f || m_runner->state() == PreviewState::Preparing)
         return -1;
     const solver::SolverStats& s = f->snapshot.stats;
-    const double byShots = f->settings.maxIterations > 0 ? double(s.iterations) / f->settings.maxIterations : 0.0;
-    // The unshot ratio falls from 1 towards the target about exponentially.
-    const double target = f->settings.convergence;
-    const double byLight = s.unshotRatio > 0.0 && target > 0.0 && target < 1.0
-                               ? std::log(std::min(1.0, s.unshotRatio)) / std::log(target)
-                               : 0.0;
-    return int(std::clamp(100.0 * std::max(byShots, byLight), 0.0, 100.0));
+    return solver::workPercent(s.iterations, f->settings.maxIterations, s.unshotRatio, f->settings.convergence);
 }
 
 void PreviewController::updateActions()

@@ -19,33 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void expectSameModel(const ReadModel& a, const ReadModel& b)
-{
-    EXPECT_EQ(a.counts.meshes, b.counts.meshes);
-    EXPECT_EQ(a.counts.pointsAndLines, b.counts.pointsAndLines);
-    ASSERT_EQ(a.soup.positions.size(), b.soup.positions.size());
-    for (std::size_t i = 0; i < a.soup.positions.size(); ++i)
-        EXPECT_EQ(a.soup.positions[i], b.soup.positions[i]);
-    ASSERT_EQ(a.soup.triangles.size(), b.soup.triangles.size());
-    for (std::size_t i = 0; i < a.soup.triangles.size(); ++i) {
-        EXPECT_EQ(a.soup.triangles[i].corners, b.soup.triangles[i].corners);
-        EXPECT_EQ(a.soup.triangles[i].material, b.soup.triangles[i].material);
-        EXPECT_EQ(a.soup.triangles[i].mesh, b.soup.triangles[i].mesh);
-    }
-    ASSERT_EQ(a.soup.materials.size(), b.soup.materials.size());
-    for (std::size_t i = 0; i < a.soup.materials.size(); ++i) {
-        EXPECT_EQ(a.soup.materials[i].name, b.soup.materials[i].name);
-        EXPECT_EQ(a.soup.materials[i].diffuse, b.soup.materials[i].diffuse);
-        EXPECT_EQ(a.soup.materials[i].emission, b.soup.materials[i].emission);
-        EXPECT_EQ(a.soup.materials[i].textured, b.soup.materials[i].textured);
-    }
-    ASSERT_EQ(a.soup.meshes.size(), b.soup.meshes.size());
-    for (std::size_t i = 0; i < a.soup.meshes.size(); ++i) {
-        EXPECT_EQ(a.soup.meshes[i].name, b.soup.meshes[i].name);
-        EXPECT_EQ(a.soup.meshes[i].object, b.soup.meshes[i].object);
-    }
-}
-
 // The children of this process (every thread's), from /proc.
 std::vector<pid_t> children()
 {
@@ -71,7 +44,7 @@ TEST(IsolatedRead, GivesExactlyTheModelOfAReadInThisProcess)
         const auto there = readModelFileIsolated(model);
         ASSERT_TRUE(here.ok()) << model;
         ASSERT_TRUE(there.ok()) << model << ": " << there.error().message;
-        expectSameModel(*here, *there);
+        EXPECT_TRUE(*here == *there) << model << ": positions, triangles, materials, meshes or counts differ";
         ASSERT_EQ(here.diagnostics().size(), there.diagnostics().size()) << model;
         for (std::size_t i = 0; i < here.diagnostics().size(); ++i)
             EXPECT_EQ(here.diagnostics()[i].message, there.diagnostics()[i].message);
