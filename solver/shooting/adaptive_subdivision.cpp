@@ -18,11 +18,17 @@ AdaptiveMesh::AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std
     , m_radiosity(std::move(radiosity))
     , m_unshot(std::move(unshot))
     , m_faces(scene.faces.size())
+    , m_shared(sharedOutlines(scene))
+    , m_rim(scene.faces.size())
 {
     if (m_radiosity.size() != scene.elements.size() || m_unshot.size() != scene.elements.size())
         throw std::invalid_argument("AdaptiveMesh: one radiosity and one unshot value per element expected");
-    for (int e = 0; e < int(scene.elements.size()); ++e)
+    for (int e = 0; e < int(scene.elements.size()); ++e) {
         addEdges(e);
+        const int face = faceOf(e);
+        if (onSharedOutline(face, e))
+            m_rim[size_t(face)].push_back(e);
+    }
 }
 
 AdaptiveMesh::EdgeKey AdaptiveMesh::key(int a, int b)
@@ -118,13 +124,89 @@ std::vector<int> AdaptiveMesh::neighboursAcross(int element, int edge) const
     return out;
 }
 
-std::vector<int> AdaptiveMesh::neighbours(int element) const
+namespace {
+
+// The elements `across(k)` lists for the three edges k, each once.
+template <typename Across>
+std::vector<int> acrossAllEdges(Across across)
 {
     std::vector<int> out;
     for (int k = 0; k < 3; ++k)
-        for (int n : neighboursAcross(element, k))
+        for (int n : across(k))
             if (std::find(out.begin(), out.end(), n) == out.end())
                 out.push_back(n);
+    return out;
+}
+
+} // namespace
+
+std::vector<int> AdaptiveMesh::neighbours(int element) const
+{
+    return acrossAllEdges([&](int k) { return neighboursAcross(element, k); });
+}
+
+bool AdaptiveMesh::onSharedOutline(int face, int element) const
+{
+    const auto& v = m_scene.elements[size_t(element)].vertices;
+    for (const SharedOutline& shared : m_shared[size_t(face)])
+        for (int k = 0; k < 3; ++k)
+            if (collinearOverlap(shared.a, shared.b, m_scene.vertices[size_t(v[size_t(k)])],
+                                 m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]) > 0.0)
+                return true;
+    return false;
+}
+
+std::vector<int> AdaptiveMesh::partnersAcross(int element, int edge) const
+{
+    std::vector<int> out;
+    const int face = faceOf(element);
+    if (m_shared[size_t(face)].empty())
+        return out;
+    const auto& v = m_scene.elements[size_t(element)].vertices;
+    const Vec3& a = m_scene.vertices[size_t(v[size_t(edge)])];
+    const Vec3& b = m_scene.vertices[size_t(v[size_t((edge + 1) % 3)])];
+    for (const SharedOutline& shared : m_shared[size_t(face)]) {
+        if (collinearOverlap(shared.a, shared.b, a, b) <= 0.0)
+            continue;
+        for (int o : m_rim[size_t(shared.partner)]) {
+            if (std::find(out.begin(), out.end(), o) != out.end())
+                continue;
+            const auto& w = m_scene.elements[size_t(o)].vertices;
+            for (int k = 0; k < 3; ++k)
+                if (collinearOverlap(a, b, m_scene.vertices[size_t(w[size_t(k)])],
+                                     m_scene.vertices[size_t(w[size_t((k + 1) % 3)])]) > 0.0) {
+                    out.push_back(o);
+                    break;
+                }
+        }
+    }
+    return out;
+}
+
+std::vector<int> AdaptiveMesh::partners(int element) const
+{
+    return acrossAllEdges([&](int k) { return partnersAcross(element, k); });
+}
+
+std::vector<int> AdaptiveMesh::coarserPartners(int element) const
+{
+    std::vector<int> out;
+    const auto& v = m_scene.elements[size_t(element)].vertices;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& a = m_scene.vertices[size_t(v[size_t(k)])];
+        const Vec3& b = m_scene.vertices[size_t(v[size_t((k + 1) % 3)])];
+        const double length = glm::length(b - a);
+        for (int n : partnersAcross(element, k)) {
+            const auto& w = m_scene.elements[size_t(n)].vertices;
+            for (int j = 0; j < 3; ++j) {
+                const Vec3& c = m_scene.vertices[size_t(w[size_t(j)])];
+                const Vec3& d = m_scene.vertices[size_t(w[size_t((j + 1) % 3)])];
+                if (collinearOverlap(a, b, c, d) > 0.0 && glm::length(d - c) > length * (1.0 + 1e-6) &&
+                    std::find(out.begin(), out.end(), n) == out.end())
+                    out.push_back(n);
+            }
+        }
+    }
     return out;
 }
 
@@ -190,21 +272,34 @@ void AdaptiveMesh::setActiveState(std::span<const int> sourceElement, std::span<
     }
 }
 
+double AdaptiveMesh::smallestEdgeAt(int element, double minEdge) const
+{
+    const Vec3& c = m_scene.elements[size_t(element)].centroid;
+    for (const Vec3& corner : m_scene.shadowCorners)
+        if (glm::length(c - corner) < kShadowCornerReach * minEdge)
+            return kShadowCornerEdge * minEdge;
+    return minEdge;
+}
+
 bool AdaptiveMesh::canSplitImpl(int element, double minEdge, int depth) const
 {
     if (!isActive(element) || depth > 64)
         return false;
     const auto& v = m_scene.elements[size_t(element)].vertices;
+    const double smallest = smallestEdgeAt(element, minEdge);
     for (int k = 0; k < 3; ++k) {
         const double len =
             glm::length(m_scene.vertices[size_t(v[size_t(k)])] - m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]);
-        if (0.5 * len < minEdge * (1.0 - 1e-9))
+        if (0.5 * len < smallest * (1.0 - 1e-9))
             return false;
     }
     if (m_anchoring) {
         const int level = m_levels[size_t(element)].level;
         for (int n : neighbours(element))
             if (m_levels[size_t(n)].level < level && !canSplitImpl(n, minEdge, depth + 1))
+                return false;
+        for (int n : coarserPartners(element))
+            if (!canSplitImpl(n, minEdge, depth + 1))
                 return false;
     }
     return true;
@@ -233,6 +328,14 @@ std::vector<int> AdaptiveMesh::split(int element, double minEdge)
                 std::vector<int> more = split(n, minEdge);
                 done.insert(done.end(), more.begin(), more.end());
             }
+        // Across a partner face's outline, by size (see the header).
+        for (int n : coarserPartners(element))
+            if (isActive(n)) {
+                std::vector<int> more = split(n, minEdge);
+                done.insert(done.end(), more.begin(), more.end());
+            }
+        if (!isActive(element))
+            return done;
     }
     splitNow(element);
     done.push_back(element);
@@ -282,12 +385,15 @@ void AdaptiveMesh::splitNow(int element)
     for (int k = 0; k < 3; ++k) {
         Rgb sum{0.0};
         double area = 0.0;
-        for (int n : neighboursAcross(element, k)) {
+        std::vector<int> across = neighboursAcross(element, k);
+        if (across.empty())
+            across = partnersAcross(element, k);
+        for (int n : across) {
             sum += m_radiosity[size_t(n)] * m_scene.elements[size_t(n)].area;
             area += m_scene.elements[size_t(n)].area;
         }
-        const Rgb across = area > 0.0 ? sum / area : m_radiosity[size_t(element)];
-        edgeValue[size_t(k)] = 0.5 * (m_radiosity[size_t(element)] + across);
+        const Rgb mean = area > 0.0 ? sum / area : m_radiosity[size_t(element)];
+        edgeValue[size_t(k)] = 0.5 * (m_radiosity[size_t(element)] + mean);
     }
     std::array<Rgb, 4> childRadiosity;
     for (int ch = 0; ch < 3; ++ch) {
@@ -338,6 +444,13 @@ void AdaptiveMesh::splitNow(int element)
         addEdges(index);
     }
     m_levels[size_t(element)].children = children;
+    if (!m_shared[size_t(face)].empty()) {
+        std::vector<int>& rim = m_rim[size_t(face)];
+        if (std::erase(rim, element) > 0)
+            for (int child : children)
+                if (onSharedOutline(face, child))
+                    rim.push_back(child);
+    }
 }
 
 int AdaptiveMesh::subdivide(std::span<const int> elements, double minEdge)
@@ -391,7 +504,10 @@ double AdaptiveMesh::contrast(int element, std::span<const Rgb> radiosity) const
 {
     const double le = luminance(radiosity[size_t(element)]);
     double largest = 0.0;
-    for (int n : neighbours(element)) {
+    std::vector<int> around = neighbours(element);
+    for (int n : partners(element))
+        around.push_back(n);
+    for (int n : around) {
         const double ln = luminance(radiosity[size_t(n)]);
         const double larger = std::max(std::abs(le), std::abs(ln));
         if (larger > 0.0)

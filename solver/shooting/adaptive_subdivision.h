@@ -17,10 +17,20 @@
 // A midpoint is shared by the elements on both sides of its edge: splitting
 // the neighbour later reuses the same vertex index, so no crack can open.
 //
+// Partner faces: where two faces lie side by side in one plane with one
+// material (solver/shooting/coplanar_partners.h), the elements along their
+// common outline are each other's neighbours too (partnersAcross): the
+// criterion compares across it, new children interpolate across it, and the
+// grading holds across it by size, since the levels of two faces' meshes are
+// not comparable.
+//
 // Anchoring (the switch in the constructor):
 //   - 2:1 grading: before an element of level L is split, every neighbour of
 //     level < L is split first (recursively), so no element ever borders one
-//     more than one level finer. An element whose three edges all carry
+//     more than one level finer. Across a partner face's outline, every
+//     element whose edge there is longer than the element's own edge is
+//     split first, so the children border nothing more than twice their
+//     size. An element whose three edges all carry
 //     midpoints is split as well (its anchored fan would be as fine anyway).
 //   - Conforming output: a coarse element with midpoints (T-vertices) on its
 //     edges stays ONE radiosity unit, but outputTriangles() triangulates it
@@ -34,6 +44,7 @@
 // pieces rebuilt with buildPieces) with the map back to this hierarchy.
 #include "model/scene.h"
 #include "solver/prepare/prepared_scene.h"
+#include "solver/shooting/coplanar_partners.h"
 
 #include <array>
 #include <cstdint>
@@ -95,14 +106,35 @@ public:
     // of an active element, or any of its edges.
     std::vector<int> neighboursAcross(int element, int edge) const;
     std::vector<int> neighbours(int element) const;
+    // Active elements of partner faces (see the top of the file) sharing a
+    // part of the edge k, or of any edge, of an active element.
+    std::vector<int> partnersAcross(int element, int edge) const;
+    std::vector<int> partners(int element) const;
     // Vertices lying inside the element's edges (its T-vertices), in order
     // around the element.
     std::vector<int> tVertices(int element) const;
     // The element's corners with its T-vertices in order between them.
     std::vector<int> boundaryLoop(int element) const;
 
+    // Near a shadow corner (PreparedScene::shadowCorners: a solid's foot
+    // corner, where the shadow lines of its rising edge meet) elements may
+    // split to kShadowCornerEdge x minEdge, within kShadowCornerReach x
+    // minEdge of the corner. Every line of the edge's penumbra starts at the
+    // corner, so the wedge between the umbra and full light is narrower than
+    // an element of minEdge for a few minEdges around it, and the light
+    // rises across it faster than such elements follow (on the Cornell box
+    // the floor 2-5 cm in front of the short block's corner read up to 97 %
+    // too bright; 43 % with these, docs/accuracy.md). Farther out the
+    // hemicube's pixels, not the elements, limit what finer elements could
+    // show (§7: too fine a mesh aliases).
+    static constexpr double kShadowCornerReach = 5.0;
+    static constexpr double kShadowCornerEdge = 0.5;
+    // The smallest edge a split of the element may make: minEdge, or less
+    // near a shadow corner (above).
+    double smallestEdgeAt(int element, double minEdge) const;
+
     // Whether split(element, minEdge) would split it: it is active, its
-    // children's edges are at least minEdge long and (anchoring) the grading
+    // children's edges are at least smallestEdgeAt(element, minEdge) long and (anchoring) the grading
     // splits it needs are allowed too. Throws std::invalid_argument unless
     // minEdge is a positive length (so do split and the selection).
     bool canSplit(int element, double minEdge) const;
@@ -114,7 +146,7 @@ public:
     int subdivide(std::span<const int> elements, double minEdge);
 
     // The largest relative luminance difference between the element and an
-    // edge neighbour, |L_e - L_n| / max(|L_e|, |L_n|) (0 without neighbours).
+    // edge neighbour or partner, |L_e - L_n| / max(|L_e|, |L_n|) (0 without neighbours).
     // `radiosity` is per hierarchy element.
     double contrast(int element, std::span<const Rgb> radiosity) const;
     // §5.7 criterion: the active elements whose luminance differs from an
@@ -149,6 +181,9 @@ private:
     void collectFiner(const FaceTopology& t, int a, int b, int exclude, std::vector<int>& out) const;
     void collectInside(const FaceTopology& t, int a, int b, std::vector<int>& out) const;
     bool canSplitImpl(int element, double minEdge, int depth) const;
+    // The partners that must be split before the element (anchoring).
+    std::vector<int> coarserPartners(int element) const;
+    bool onSharedOutline(int face, int element) const;
     void splitNow(int element);
 
     PreparedScene& m_scene;
@@ -157,6 +192,10 @@ private:
     std::vector<Rgb> m_radiosity;
     std::vector<Rgb> m_unshot;
     std::vector<FaceTopology> m_faces;
+    // Per face: the outline it shares with partner faces, and its active
+    // elements with an edge on it (kept up to date by splitNow).
+    std::vector<std::vector<SharedOutline>> m_shared;
+    std::vector<std::vector<int>> m_rim;
 };
 
 } // namespace regio::solver

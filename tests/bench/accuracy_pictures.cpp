@@ -140,6 +140,9 @@ int main(int argc, char** argv)
     // Where the large errors are: per face, the cells off by more than 10 %,
     // too bright and too dark.
     std::map<std::string, std::pair<int, int>> largeByFace;
+    // Per face, the mean luminance over its cells, shown and reference (the
+    // cells are of one size, so these are area-weighted means).
+    std::map<std::string, std::pair<double, double>> meanByFace;
     for (size_t i = 0; i < cells.size(); ++i) {
         const Cell& c = cells[i];
         const std::string& id = reference.faces()[static_cast<size_t>(c.face)].id;
@@ -149,6 +152,8 @@ int main(int argc, char** argv)
             continue;
         const double error = 100.0 * std::abs(test::luminance(*shown) - truth) / truth;
         errors.push_back(error);
+        meanByFace[id].first += test::luminance(*shown);
+        meanByFace[id].second += truth;
         if (error > 10.0) {
             auto& [bright, dark] = largeByFace[id];
             ++(test::luminance(*shown) > truth ? bright : dark);
@@ -188,5 +193,8 @@ int main(int argc, char** argv)
     std::printf("cells off by more than 10 %%, too bright / too dark:\n");
     for (const auto& [id, counts] : largeByFace)
         std::printf("  %-24s %5d / %5d\n", id.c_str(), counts.first, counts.second);
+    std::printf("per face, mean of the picture against the reference's:\n");
+    for (const auto& [id, sums] : meanByFace)
+        std::printf("  %-24s %+6.2f %%\n", id.c_str(), 100.0 * (sums.first - sums.second) / sums.second);
     return 0;
 }
