@@ -14,6 +14,7 @@
 #include "model/io/scene_json.h"
 #include "output/false_colour.h"
 #include "output/legend_overlay.h"
+#include "output/lit_mesh.h"
 #include "output/png_writer.h"
 #include "output/software_render.h"
 #include "output/vertex_radiosity.h"
@@ -122,6 +123,8 @@ int main(int argc, char** argv)
     const output::LitMesh lit = output::smoothLitMesh((*built)->prepared(), snapshot.radiosity);
     const glm::vec3 ambient(snapshot.stats.ambient);
     const test::LitMeshProbe probe(lit);
+    const output::LitMesh flat = output::litMeshFromSolution((*built)->prepared(), snapshot.radiosity);
+    const test::LitMeshProbe flatProbe(flat);
 
     const test::PointwiseReference reference(scene);
     const std::vector<test::FaceGeometry> faces = test::faceGeometry(scene);
@@ -140,9 +143,13 @@ int main(int argc, char** argv)
     // Where the large errors are: per face, the cells off by more than 10 %,
     // too bright and too dark.
     std::map<std::string, std::pair<int, int>> largeByFace;
-    // Per face, the mean luminance over its cells, shown and reference (the
-    // cells are of one size, so these are area-weighted means).
-    std::map<std::string, std::pair<double, double>> meanByFace;
+    // Per face, the mean luminance over its cells: smooth picture, flat
+    // elements and reference (the cells are of one size, so these are
+    // area-weighted means).
+    struct Means {
+        double smooth = 0.0, flat = 0.0, reference = 0.0;
+    };
+    std::map<std::string, Means> meanByFace;
     for (size_t i = 0; i < cells.size(); ++i) {
         const Cell& c = cells[i];
         const std::string& id = reference.faces()[static_cast<size_t>(c.face)].id;
@@ -152,8 +159,10 @@ int main(int argc, char** argv)
             continue;
         const double error = 100.0 * std::abs(test::luminance(*shown) - truth) / truth;
         errors.push_back(error);
-        meanByFace[id].first += test::luminance(*shown);
-        meanByFace[id].second += truth;
+        meanByFace[id].smooth += test::luminance(*shown);
+        meanByFace[id].flat +=
+            test::luminance(flatProbe.displayRadiosityAt(id, c.centre, ambient).value_or(model::Rgb{0.0}));
+        meanByFace[id].reference += truth;
         if (error > 10.0) {
             auto& [bright, dark] = largeByFace[id];
             ++(test::luminance(*shown) > truth ? bright : dark);
@@ -193,8 +202,10 @@ int main(int argc, char** argv)
     std::printf("cells off by more than 10 %%, too bright / too dark:\n");
     for (const auto& [id, counts] : largeByFace)
         std::printf("  %-24s %5d / %5d\n", id.c_str(), counts.first, counts.second);
-    std::printf("per face, mean of the picture against the reference's:\n");
+    std::printf("per face, mean of the smooth picture and of the elements against the reference's:\n");
     for (const auto& [id, sums] : meanByFace)
-        std::printf("  %-24s %+6.2f %%\n", id.c_str(), 100.0 * (sums.first - sums.second) / sums.second);
+        std::printf("  %-24s %+6.2f %%  %+6.2f %%\n", id.c_str(),
+                    100.0 * (sums.smooth - sums.reference) / sums.reference,
+                    100.0 * (sums.flat - sums.reference) / sums.reference);
     return 0;
 }
