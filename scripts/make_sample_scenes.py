@@ -2,14 +2,15 @@
 """Writes the sample scenes in resources/scenes/.
 
 The scenes are committed as JSON; this script documents where every number
-comes from and regenerates them after a deliberate change. Run it from the
-repository root: python3 scripts/make_sample_scenes.py
-(`regio-solve` and the editor rewrite files in their canonical layout; the
-output here is valid input in any layout.)
+comes from and regenerates them after a deliberate change. Run it from anywhere: python3 scripts/make_sample_scenes.py [OUT_DIR]
+(default: resources/scenes). The committed files are exactly its output, and
+a test (sample_scenes_generator) keeps them so: after changing a number here,
+run it and commit both.
 """
 import json
 import math
 import os
+import sys
 
 OUT = os.path.join(os.path.dirname(__file__), "..", "resources", "scenes")
 
@@ -292,9 +293,10 @@ def two_lights_room():
 
 
 def main():
-    os.makedirs(OUT, exist_ok=True)
+    out = sys.argv[1] if len(sys.argv) > 1 else OUT
+    os.makedirs(out, exist_ok=True)
     for name, scene in (("cornell-box.json", cornell_box()), ("two-lights-room.json", two_lights_room())):
-        with open(os.path.join(OUT, name), "w") as f:
+        with open(os.path.join(out, name), "w") as f:
             json.dump(scene, f, indent=2)
             f.write("\n")
 
