@@ -83,6 +83,9 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
 
     auto* settingsBox = new QGroupBox(tr("Settings"));
     auto* form = new QFormLayout(settingsBox);
+    // In a narrow column a field goes under its label instead of widening
+    // the panel past the column (a horizontal scrollbar).
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* presetRow = new QHBoxLayout;
     m_preset = new QComboBox;
     m_preset->addItem(tr("Custom"));
@@ -102,6 +105,7 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
     m_adaptive = new QGroupBox(tr("Adaptive subdivision"));
     m_adaptive->setCheckable(true);
     auto* adaptiveForm = new QFormLayout(m_adaptive);
+    adaptiveForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_threshold = doubleSpin(0.001, 1.0, 0.01, 3, QString());
     m_threshold->setToolTip(tr("Relative radiosity difference to a neighbour that splits an element"));
     adaptiveForm->addRow(tr("Threshold:"), m_threshold);
@@ -128,6 +132,7 @@ SolverDock::SolverDock(SceneDocument* document, const Actions& actions, QWidget*
 
     auto* displayBox = new QGroupBox(tr("Display"));
     auto* displayForm = new QFormLayout(displayBox);
+    displayForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_exposure = doubleSpin(-20.0, 20.0, 0.25, 2, tr(" EV"));
     displayForm->addRow(tr("Exposure:"), m_exposure);
     m_gamma = doubleSpin(0.5, 4.0, 0.1, 2, QString());
