@@ -390,6 +390,13 @@ QString PreviewController::statusText() const
         // user has light left to shoot, and says so.
         switch (f->snapshot.stats.stop) {
         case solver::StopReason::MaxIterations:
+            // An exact number of shots (--preview-iterations) runs without
+            // the convergence test, and may well end below the scene's
+            // threshold: that is converged, whatever stopped it.
+            if (f->snapshot.stats.unshotRatio < m_document->scene().solver.convergence) {
+                text = tr("Converged: %1").arg(figures());
+                break;
+            }
             text = tr("Stopped at the iteration limit, not converged: %1 (Continue goes on)").arg(figures());
             break;
         case solver::StopReason::Cancelled:

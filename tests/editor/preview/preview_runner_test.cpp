@@ -336,6 +336,26 @@ private slots:
         QCOMPARE(continued.unshotRatio, once.unshotRatio);
     }
 
+    // An exact number of shots (what --preview-iterations asks for) runs
+    // without the convergence test; ending below the scene's threshold, the
+    // status says converged, not "not converged".
+    void anExactShotCountThatEndsBelowTheThresholdSaysConverged()
+    {
+        auto window = makeWindow();
+        model::Scene scene = draftSample("cornell-box");
+        scene.solver.convergence = 0.5; // reached after the lamp's first shots
+        window->document()->reset(scene);
+        PreviewController* preview = window->preview();
+        preview->runIterations(200);
+        QVERIFY(waitForFinal(*preview->runner()));
+        const solver::SolverStats stats = preview->runner()->frame()->snapshot.stats;
+        QCOMPARE(stats.iterations, 200);
+        QCOMPARE(stats.stop, solver::StopReason::MaxIterations);
+        QVERIFY(stats.unshotRatio < 0.5);
+        QTRY_VERIFY2(preview->statusText().startsWith(QStringLiteral("Converged: iteration 200, unshot ")),
+                     qPrintable(preview->statusText()));
+    }
+
     // A refinement round brings no frame for up to a few hundred ms: the
     // status says what the solver is doing and the bar turns busy.
     void aRefinementRoundShowsInTheStatus()
