@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <optional>
+#include <utility>
 
 namespace regio::solver {
 
@@ -34,9 +36,8 @@ BucketKey bucketKey(const Properties& p)
 }
 
 struct Extent {
-    double lo = 0.0, hi = 0.0; // along x
     int face = -1;
-    model::Box3 box; // to pass over faces that cannot touch before their edges are compared
+    model::Box3 box; // swept along x; faces whose boxes do not touch are passed over
 };
 
 // The boxes meet or touch (within the distance tolerance).
@@ -48,21 +49,32 @@ bool touch(const model::Box3& a, const model::Box3& b)
     return true;
 }
 
-} // namespace
-
-double collinearOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+// Where segment cd lies along segment ab when both lie on one line: the
+// common part as distances from a towards b (empty when they are not on one
+// line or share no more than a point).
+std::optional<std::pair<double, double>> commonPart(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
     const Vec3 ab = b - a;
     const double length = glm::length(ab);
     if (length <= model::kDistanceEpsilon)
-        return 0.0;
+        return std::nullopt;
     const Vec3 u = ab / length;
     const auto offLine = [&](const Vec3& p) { return glm::length(glm::cross(p - a, u)); };
     if (offLine(c) > model::kDistanceEpsilon || offLine(d) > model::kDistanceEpsilon)
-        return 0.0;
+        return std::nullopt;
     const double tc = glm::dot(c - a, u), td = glm::dot(d - a, u);
     const double lo = std::max(0.0, std::min(tc, td)), hi = std::min(length, std::max(tc, td));
-    return hi - lo > model::kDistanceEpsilon ? hi - lo : 0.0;
+    if (hi - lo <= model::kDistanceEpsilon)
+        return std::nullopt;
+    return std::pair{lo, hi};
+}
+
+} // namespace
+
+double collinearOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+    const auto part = commonPart(a, b, c, d);
+    return part ? part->second - part->first : 0.0;
 }
 
 std::vector<std::vector<SharedOutline>> sharedOutlines(const PreparedScene& scene)
@@ -73,20 +85,19 @@ std::vector<std::vector<SharedOutline>> sharedOutlines(const PreparedScene& scen
         const InputFace& face = scene.faces[f];
         if (face.polygon.size() < 3 || face.elements.empty())
             continue;
-        Extent e{face.polygon.front().x, face.polygon.front().x, int(f), {}};
-        for (const Vec3& p : face.polygon) {
-            e.lo = std::min(e.lo, p.x);
-            e.hi = std::max(e.hi, p.x);
+        Extent e{int(f), {}};
+        for (const Vec3& p : face.polygon)
             e.box.extend(p);
-        }
         buckets[bucketKey(scene.properties[f])].push_back(e);
     }
     for (auto& [key, faces] : buckets) {
         // Sweep along x: only faces whose x ranges meet can touch.
-        std::sort(faces.begin(), faces.end(), [](const Extent& x, const Extent& y) { return x.lo < y.lo; });
+        std::sort(faces.begin(), faces.end(),
+                  [](const Extent& x, const Extent& y) { return x.box.min.x < y.box.min.x; });
         for (size_t i = 0; i < faces.size(); ++i) {
             const std::vector<Vec3>& p = scene.faces[size_t(faces[i].face)].polygon;
-            for (size_t j = i + 1; j < faces.size() && faces[j].lo <= faces[i].hi + model::kDistanceEpsilon; ++j) {
+            for (size_t j = i + 1;
+                 j < faces.size() && faces[j].box.min.x <= faces[i].box.max.x + model::kDistanceEpsilon; ++j) {
                 if (!touch(faces[i].box, faces[j].box))
                     continue;
                 const std::vector<Vec3>& q = scene.faces[size_t(faces[j].face)].polygon;
@@ -95,15 +106,10 @@ std::vector<std::vector<SharedOutline>> sharedOutlines(const PreparedScene& scen
                     const Vec3& b = p[(k + 1) % p.size()];
                     const Vec3 u = glm::normalize(b - a);
                     for (size_t l = 0; l < q.size(); ++l) {
-                        const Vec3& c = q[l];
-                        const Vec3& d = q[(l + 1) % q.size()];
-                        if (collinearOverlap(a, b, c, d) <= 0.0)
+                        const auto part = commonPart(a, b, q[l], q[(l + 1) % q.size()]);
+                        if (!part)
                             continue;
-                        // The common part, from a towards b.
-                        const double length = glm::length(b - a);
-                        const double tc = glm::dot(c - a, u), td = glm::dot(d - a, u);
-                        const Vec3 from = a + u * std::max(0.0, std::min(tc, td));
-                        const Vec3 to = a + u * std::min(length, std::max(tc, td));
+                        const Vec3 from = a + u * part->first, to = a + u * part->second;
                         shared[size_t(faces[i].face)].push_back({faces[j].face, from, to});
                         shared[size_t(faces[j].face)].push_back({faces[i].face, to, from});
                     }
