@@ -333,6 +333,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
             terms.push_back(own);
             boundary.push_back(1);
             neighbours.emplace_back();
+            singular.push_back(1);
         }
     }
 
@@ -361,6 +362,8 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
     // Emit the group's geometry: its vertices once each, then its triangles.
     const glm::vec3 normal = glm::normalize(toFloat(glm::normalize(planeNormal)));
     const auto group = m_groupOf.empty() ? 0u : m_groupOf.back() + 1u;
+    if (options.meanPreservingPasses > 0)
+        m_mass.resize(m_mass.size() + positions.size(), 0.0); // summed below; 0 = pinned
     for (size_t v = 0; v < positions.size(); ++v) {
         m_exact.push_back(positions[v]);
         m_groupOf.push_back(group);
@@ -379,6 +382,19 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         for (int v : triangles[t])
             m_geometry.indices.push_back(base + static_cast<uint32_t>(v));
         m_geometry.triangleFace.push_back(triangleFace[t]);
+        if (options.meanPreservingPasses > 0) {
+            const Vec3& a = positions[size_t(triangles[t][0])];
+            const Vec3& b = positions[size_t(triangles[t][1])];
+            const Vec3& c = positions[size_t(triangles[t][2])];
+            const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+            ProjectionTriangle pt{{}, uint32_t(elements[triangleElement[t]]), area};
+            for (size_t k = 0; k < 3; ++k) {
+                pt.v[k] = base + uint32_t(triangles[t][k]);
+                if (!singular[size_t(triangles[t][k])])
+                    m_mass[pt.v[k]] += area / 3.0;
+            }
+            m_projection.push_back(pt);
+        }
     }
 }
 
@@ -475,6 +491,8 @@ void SmoothShading::closeCracksBetweenGroups()
     // their edge); the per-vertex arrays still need an entry each.
     const bool neighbourhood = m_options.extrapolateBoundary || m_options.neighbourPasses > 0;
     for (size_t v = original; v < m_exact.size(); ++v) {
+        if (m_options.meanPreservingPasses > 0)
+            m_mass.push_back(0.0); // set from their edge, never corrected
         m_weight.push_back(0.0);
         m_termEnd.push_back(m_termEnd.empty() ? 0u : m_termEnd.back());
         if (neighbourhood) {
@@ -528,6 +546,8 @@ void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm
                 value[v] = glm::max(2.0 * average[v] - inner / static_cast<double>(n), Rgb(0.0));
         }
     }
+    for (int pass = 0; pass < m_options.meanPreservingPasses; ++pass)
+        preserveMeans(elementRadiosity, value);
     for (int pass = 0; pass < m_options.neighbourPasses; ++pass) {
         const std::vector<Rgb> previous = value;
         for (size_t v = 0; v < vertices; ++v) {
@@ -546,6 +566,25 @@ void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm
     radiosity.resize(vertices);
     for (size_t v = 0; v < vertices; ++v)
         radiosity[v] = toFloat(value[v]);
+}
+
+void SmoothShading::preserveMeans(std::span<const Rgb> elementRadiosity, std::vector<Rgb>& value) const
+{
+    // Per vertex v: the integral of its hat function phi_v times (element
+    // value - Gouraud value) over its triangles, where a triangle of area A
+    // with corner values a, b, c gives A (B / 3 - (2 a + b + c) / 12) to
+    // corner a; divided by the lumped mass (A / 3 summed), one Jacobi step of
+    // the L2 projection of the element values onto the Gouraud mesh.
+    std::vector<Rgb> residual(value.size(), Rgb(0.0));
+    for (const ProjectionTriangle& t : m_projection) {
+        const Rgb third = elementRadiosity[t.element] / 3.0;
+        const Rgb sum = value[t.v[0]] + value[t.v[1]] + value[t.v[2]];
+        for (uint32_t v : t.v)
+            residual[v] += t.area * (third - (value[v] + sum) / 12.0);
+    }
+    for (size_t v = 0; v < value.size(); ++v)
+        if (m_mass[v] > 0.0)
+            value[v] = glm::max(value[v] + residual[v] / m_mass[v], Rgb(0.0));
 }
 
 LitMesh SmoothShading::litMesh(std::span<const Rgb> elementRadiosity) const

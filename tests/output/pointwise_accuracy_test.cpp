@@ -208,10 +208,13 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     // faces meshed only where no solid covers them and cut along the shadow
     // lines at the blocks' feet, near receivers given the contour formula's
     // factors and boundary vertices extrapolated (smooth), elements down to
-    // half the smallest edge near the blocks' foot corners: median 0.75 %,
-    // 90th percentile 2.97 %, 99th 8.1 %, worst 43 %; beside contact lines
-    // median 1.5 %, 90th 4.7 %, 99th 16 %. Flat: median 2.1 %, 90th 6.9 %;
-    // beside contact lines median 3.0 %. (Without the finer corners: 0.76,
+    // half the smallest edge near the blocks' foot corners, one
+    // mean-preserving pass over the vertex values (smooth): median 0.72 %,
+    // 90th percentile 2.51 %, 99th 6.4 %, worst 29 %; beside contact lines
+    // median 1.55 %, 90th 4.0 %, 99th 11.4 %. Flat: median 2.1 %, 90th
+    // 6.9 %; beside contact lines median 3.0 %. (Without the mean-preserving
+    // pass: 0.75, 2.97, 8.1, worst 43; beside contact lines 1.5, 4.7, 16.
+    // Without the finer corners: 0.76,
     // 2.97, 9.9, worst 97; beside contact lines 1.8, 5.5, 27; flat 2.1, 6.7,
     // beside contact lines 2.7. Hemicube 150: 0.85, 3.0, 8.9, 1.8, 4.8;
     // flat 2.6, 8.9, 3.8. Without the shadow lines: 0.83, 3.1, 13, worst
@@ -229,9 +232,9 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     EXPECT_LT(smoothAll.p90, 0.03);
     EXPECT_LT(smoothAll.p99, 0.10);
     EXPECT_LT(smoothContact.median, 0.025);
-    EXPECT_LT(smoothContact.p90, 0.06);
-    EXPECT_LT(smoothContact.p99, 0.20);
-    EXPECT_LT(smoothAll.worst, 0.60);
+    EXPECT_LT(smoothContact.p90, 0.05);
+    EXPECT_LT(smoothContact.p99, 0.15);
+    EXPECT_LT(smoothAll.worst, 0.40);
     EXPECT_LT(flatAll.median, 0.03);
     EXPECT_LT(flatAll.p90, 0.08);
     EXPECT_LT(flatContact.median, 0.04);
