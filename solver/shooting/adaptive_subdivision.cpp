@@ -145,41 +145,47 @@ std::vector<int> AdaptiveMesh::neighbours(int element) const
     return acrossAllEdges([&](int k) { return neighboursAcross(element, k); });
 }
 
-bool AdaptiveMesh::onSharedOutline(int face, int element) const
+std::pair<const Vec3&, const Vec3&> AdaptiveMesh::edgeEnds(int element, int edge) const
 {
     const auto& v = m_scene.elements[size_t(element)].vertices;
+    return {m_scene.vertices[size_t(v[size_t(edge)])], m_scene.vertices[size_t(v[size_t((edge + 1) % 3)])]};
+}
+
+bool AdaptiveMesh::onSharedOutline(int face, int element) const
+{
     for (const SharedOutline& shared : m_shared[size_t(face)])
-        for (int k = 0; k < 3; ++k)
-            if (collinearOverlap(shared.a, shared.b, m_scene.vertices[size_t(v[size_t(k)])],
-                                 m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]) > 0.0)
+        for (int k = 0; k < 3; ++k) {
+            const auto [a, b] = edgeEnds(element, k);
+            if (collinearOverlap(shared.a, shared.b, a, b) > 0.0)
                 return true;
+        }
     return false;
+}
+
+template <typename Visit>
+void AdaptiveMesh::forEachPartnerEdge(int element, int edge, Visit visit) const
+{
+    const int face = faceOf(element);
+    const auto [a, b] = edgeEnds(element, edge);
+    for (const SharedOutline& shared : m_shared[size_t(face)]) {
+        if (collinearOverlap(shared.a, shared.b, a, b) <= 0.0)
+            continue;
+        for (int o : m_rim[size_t(shared.partner)])
+            for (int k = 0; k < 3; ++k) {
+                const auto [c, d] = edgeEnds(o, k);
+                if (collinearOverlap(a, b, c, d) > 0.0)
+                    visit(o, c, d);
+            }
+    }
 }
 
 std::vector<int> AdaptiveMesh::partnersAcross(int element, int edge) const
 {
     std::vector<int> out;
-    const int face = faceOf(element);
-    if (m_shared[size_t(face)].empty())
-        return out;
-    const auto& v = m_scene.elements[size_t(element)].vertices;
-    const Vec3& a = m_scene.vertices[size_t(v[size_t(edge)])];
-    const Vec3& b = m_scene.vertices[size_t(v[size_t((edge + 1) % 3)])];
-    for (const SharedOutline& shared : m_shared[size_t(face)]) {
-        if (collinearOverlap(shared.a, shared.b, a, b) <= 0.0)
-            continue;
-        for (int o : m_rim[size_t(shared.partner)]) {
-            if (std::find(out.begin(), out.end(), o) != out.end())
-                continue;
-            const auto& w = m_scene.elements[size_t(o)].vertices;
-            for (int k = 0; k < 3; ++k)
-                if (collinearOverlap(a, b, m_scene.vertices[size_t(w[size_t(k)])],
-                                     m_scene.vertices[size_t(w[size_t((k + 1) % 3)])]) > 0.0) {
-                    out.push_back(o);
-                    break;
-                }
-        }
-    }
+    forEachPartnerEdge(element, edge, [&](int o, const Vec3&, const Vec3&) {
+        if (std::find(out.begin(), out.end(), o) == out.end())
+            out.push_back(o);
+    });
     return out;
 }
 
@@ -191,21 +197,13 @@ std::vector<int> AdaptiveMesh::partners(int element) const
 std::vector<int> AdaptiveMesh::coarserPartners(int element) const
 {
     std::vector<int> out;
-    const auto& v = m_scene.elements[size_t(element)].vertices;
     for (int k = 0; k < 3; ++k) {
-        const Vec3& a = m_scene.vertices[size_t(v[size_t(k)])];
-        const Vec3& b = m_scene.vertices[size_t(v[size_t((k + 1) % 3)])];
+        const auto [a, b] = edgeEnds(element, k);
         const double length = glm::length(b - a);
-        for (int n : partnersAcross(element, k)) {
-            const auto& w = m_scene.elements[size_t(n)].vertices;
-            for (int j = 0; j < 3; ++j) {
-                const Vec3& c = m_scene.vertices[size_t(w[size_t(j)])];
-                const Vec3& d = m_scene.vertices[size_t(w[size_t((j + 1) % 3)])];
-                if (collinearOverlap(a, b, c, d) > 0.0 && glm::length(d - c) > length * (1.0 + 1e-6) &&
-                    std::find(out.begin(), out.end(), n) == out.end())
-                    out.push_back(n);
-            }
-        }
+        forEachPartnerEdge(element, k, [&](int o, const Vec3& c, const Vec3& d) {
+            if (glm::length(d - c) > length * (1.0 + 1e-6) && std::find(out.begin(), out.end(), o) == out.end())
+                out.push_back(o);
+        });
     }
     return out;
 }
@@ -285,12 +283,10 @@ bool AdaptiveMesh::canSplitImpl(int element, double minEdge, int depth) const
 {
     if (!isActive(element) || depth > 64)
         return false;
-    const auto& v = m_scene.elements[size_t(element)].vertices;
     const double smallest = smallestEdgeAt(element, minEdge);
     for (int k = 0; k < 3; ++k) {
-        const double len =
-            glm::length(m_scene.vertices[size_t(v[size_t(k)])] - m_scene.vertices[size_t(v[size_t((k + 1) % 3)])]);
-        if (0.5 * len < smallest * (1.0 - 1e-9))
+        const auto [a, b] = edgeEnds(element, k);
+        if (0.5 * glm::length(b - a) < smallest * (1.0 - 1e-9))
             return false;
     }
     if (m_anchoring) {

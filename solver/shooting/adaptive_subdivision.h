@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace regio::solver {
@@ -181,6 +182,12 @@ private:
     void collectFiner(const FaceTopology& t, int a, int b, int exclude, std::vector<int>& out) const;
     void collectInside(const FaceTopology& t, int a, int b, std::vector<int>& out) const;
     bool canSplitImpl(int element, double minEdge, int depth) const;
+    // The corners of the element's edge k (corner k to corner k + 1).
+    std::pair<const Vec3&, const Vec3&> edgeEnds(int element, int edge) const;
+    // visit(partner element, c, d) for every edge cd of an active element of a
+    // partner face that shares a part of the element's edge k.
+    template <typename Visit>
+    void forEachPartnerEdge(int element, int edge, Visit visit) const;
     // The partners that must be split before the element (anchoring).
     std::vector<int> coarserPartners(int element) const;
     bool onSharedOutline(int face, int element) const;
