@@ -3,6 +3,7 @@
 #include "model/geometry/geometry.h"
 #include "solver/prepare/conforming_strips.h"
 #include "solver/prepare/covered_parts.h"
+#include "solver/prepare/facing_faces.h"
 
 #include <glm/geometric.hpp>
 
@@ -151,6 +152,12 @@ void meshFaces(PreparedScene& scene)
     // (solver/prepare/covered_parts.h), as one conforming mesh of its pieces.
     scene.shadowCorners.clear();
     const std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene, &scene.shadowCorners);
+    // Faces that stand in front of each other across a gap of a few patches
+    // take their light from each other by the contour formula farther out
+    // (solver/shooting/near_field.h).
+    std::vector<std::vector<int>> facing = closeFacingFaces(scene, kFacingGapPatches * scene.patchSize);
+    for (size_t f = 0; f < scene.faces.size(); ++f)
+        scene.faces[f].facing = std::move(facing[f]);
     for (size_t f = 0; f < scene.faces.size(); ++f) {
         InputFace& face = scene.faces[f];
         face.firstPatch = int(scene.patches.size());

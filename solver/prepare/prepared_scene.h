@@ -110,6 +110,9 @@ struct InputFace {
     int firstPatch = 0;        // its patches: [firstPatch, firstPatch + patchCount)
     int patchCount = 0;
     std::vector<int> elements; // every element of this face (any order); none where a solid covers it
+    // The faces in front of it across a gap of less than kFacingGapPatches
+    // patch sizes (solver/prepare/facing_faces.h), ascending.
+    std::vector<int> facing;
 };
 
 // A convex piece of an input face after clipping by the separating planes

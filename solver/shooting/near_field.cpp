@@ -62,7 +62,7 @@ double formFactorOf(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon)
 // a factor off by up to sixteen times; from the lamp element's centroid it
 // covers the view alike wherever it lies.
 template <typename Corner>
-double nearFactor(const Element& from, const Element& to, const Corner& corner)
+double nearFactor(const Element& from, const Element& to, const Corner& corner, bool centroidOnly = false)
 {
     const bool atReceiver = to.area <= from.area;
     const Element& point = atReceiver ? to : from; // where the factor is taken
@@ -77,7 +77,7 @@ double nearFactor(const Element& from, const Element& to, const Corner& corner)
     const double distance = std::abs(glm::dot(seen.normal, point.centroid - polygon[0]));
     const double size = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
     double mean = 0.0;
-    if (size < 0.25 * distance) {
+    if (centroidOnly || size < 0.25 * distance) {
         mean = formFactorOf(point.centroid, point.normal, polygon);
     } else {
         for (const Vec3& x :
@@ -85,6 +85,42 @@ double nearFactor(const Element& from, const Element& to, const Corner& corner)
             mean += formFactorOf(x, point.normal, polygon) / 4.0;
     }
     return atReceiver ? mean * to.area / from.area : mean; // reciprocity
+}
+
+// A receiver on a face facing the shooter's, beyond the shooter's longest
+// edge (near_field.h): the hemicube tells what share of it the shooter's
+// centre sees, the contour formula what the whole shooter gives it, and the
+// point-to-point kernel (cos cos / r^2) how that splits among the shooter's
+// elements, which send their own power. Appends its terms; false when the
+// contour formula sees nothing of it. `weights` is scratch space.
+bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Element& whole, const Element& e,
+                       double hemicubeFactor, std::uint32_t entry, std::vector<NearTerm>& near,
+                       std::vector<double>& perElement, std::vector<double>& weights)
+{
+    const auto corner = [&](int v) { return scene.vertices[size_t(v)]; };
+    const std::array<Vec3, 3> seen{corner(e.vertices[0]), corner(e.vertices[1]), corner(e.vertices[2])};
+    const double atCentre = formFactorOf(patch.centroid, whole.normal, seen); // what the hemicube stands for
+    if (atCentre <= 0.0)
+        return false;
+    const double exact = nearFactor(whole, e, corner); // F(shooter -> e)
+    weights.assign(size_t(patch.elementCount), 0.0);
+    double kernels = 0.0; // the area-weighted mean weight
+    for (int s = 0; s < patch.elementCount; ++s) {
+        const Element& from = scene.elements[size_t(patch.firstElement + s)];
+        const Vec3 d = e.centroid - from.centroid;
+        const double r2 = glm::dot(d, d);
+        weights[size_t(s)] =
+            std::max(0.0, glm::dot(from.normal, d)) * std::max(0.0, -glm::dot(e.normal, d)) / (r2 * r2);
+        kernels += weights[size_t(s)] * from.area / patch.area;
+    }
+    if (exact <= 0.0 || kernels <= 0.0)
+        return false;
+    const double scale = hemicubeFactor / atCentre * exact / kernels;
+    for (int s = 0; s < patch.elementCount; ++s) {
+        near.push_back({entry, s, scale * weights[size_t(s)]});
+        perElement[size_t(s)] += scale * weights[size_t(s)];
+    }
+    return true;
 }
 
 } // namespace
@@ -104,17 +140,31 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
     for (int i = 0; i < 3; ++i)
         reach = std::max(reach,
                          glm::length(corner(patch.vertices[size_t((i + 1) % 3)]) - corner(patch.vertices[size_t(i)])));
+    const std::vector<int>& facingFaces = scene.faces[size_t(patch.properties)].facing;
+    Element whole; // the shooter as one polygon
+    whole.vertices = patch.vertices;
+    whole.area = patch.area;
+    whole.centroid = patch.centroid;
+    whole.normal = scene.properties[size_t(patch.properties)].plane.normal;
     const size_t first = near.size();
-    double total = 0.0;    // the hemicube's factors of every receiver
-    double hemicube = 0.0; // and of the near ones
+    double total = 0.0; // the hemicube's factors of every receiver
     std::vector<size_t> entries;
+    std::vector<double> weights; // scratch for appendFacingTerms
     std::vector<double> perElement(size_t(patch.elementCount), 0.0);
     for (size_t k = 0; k < elements.size(); ++k) {
         total += factors[k];
         const Element& e = scene.elements[elements[k]];
-        if (glm::length(e.centroid - patch.centroid) >= reach)
+        const double distance = glm::length(e.centroid - patch.centroid);
+        if (distance >= reach) {
+            if (distance < kFacingReach * reach &&
+                std::binary_search(facingFaces.begin(), facingFaces.end(), e.properties)) {
+                if (appendFacingTerms(scene, patch, whole, e, factors[k], std::uint32_t(k), near, perElement, weights))
+                    entries.push_back(k);
+            }
             continue;
-        // The form factor from the element's centroid to each shooter element.
+        }
+        // The form factor from each shooter element: this close, the
+        // gradient across the shooter matters.
         const size_t before = near.size();
         for (int s = 0; s < patch.elementCount; ++s) {
             const Element& from = scene.elements[size_t(patch.firstElement + s)];
@@ -126,14 +176,18 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
         }
         if (near.size() == before)
             continue; // the contour formula sees nothing: keep the hemicube's factor
-        hemicube += factors[k];
         entries.push_back(k);
     }
     if (entries.empty())
         return;
-    for (size_t k : entries)
+    double hemicube = 0.0; // the hemicube's factors of the near receivers
+    for (size_t k : entries) {
+        hemicube += factors[k];
         factors[k] = 0.0;
-    const double far = total - hemicube;
+    }
+    double far = 0.0; // and of the far ones
+    for (double f : factors)
+        far += f;
     if (far <= 0.0) {
         // Every receiver is near: each element of the shooter hands on the
         // hemicube's total, shared by its own contour factors.

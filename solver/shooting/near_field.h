@@ -18,12 +18,28 @@
 // element of the shooter still sends the hemicube's total: a shot's books
 // stay exact and a closed room stays closed. The hemicube still decides
 // which elements are seen at all.
+//
+// A receiver counts as near when its centroid lies within the shooter's
+// longest edge of the shooter's centroid. Farther out, the hemicube's
+// proximity error still shows where two faces stand in front of each other
+// across a gap of a few patches (InputFace::facing,
+// solver/prepare/facing_faces.h: a block's side 8-13 cm from a wall of 10 cm
+// patches). A receiver on a face facing the shooter's, within kFacingReach
+// times that edge, is near too, with other factors: the contour formula
+// does not know what stands between, which out there may be something, so
+// the hemicube's factor is kept as the share of the receiver that the
+// shooter's centre sees (over the contour factor from that centre), times
+// the whole shooter's contour factor, split among the shooter's elements by
+// the point-to-point kernel so that each sends its own unshot radiosity.
 #include "solver/prepare/prepared_scene.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace regio::solver {
+
+// How much farther the near field reaches between facing faces.
+inline constexpr double kFacingReach = 3.0;
 
 // Form factor from a point with unit normal n to a convex polygon (the part
 // in front of the point's plane), by Lambert's contour formula.
@@ -33,13 +49,12 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
 // elements carry their own unshot radiosity, and this close the gradient
 // across the shooter matters (a floor patch darker by the block's foot).
 struct NearTerm {
-    std::uint32_t entry = 0; // index into the row's elements / factors
+    std::uint32_t entry = 0; // index into the row's elements / factors; a receiver's terms are consecutive
     int shooterElement = 0;  // offset in the shooter's elements
     double factor = 0.0;     // F(shooter element -> receiver)
 };
 
-// For the `elements` whose centroid is closer to the shooter's centroid than
-// the shooter's longest edge: sets their factor to 0 and appends their
+// For the near `elements` (above): sets their factor to 0 and appends their
 // per-shooter-element factors to `near`; sets farScale[s] (one per shooter
 // element) so that shooter element s sends its near factors plus farScale[s]
 // times the other elements' factors, exactly the row's total. Leaves the row

@@ -152,15 +152,11 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
             farPower += m_elementPower[s] * row->farScale[s];
     }
     Rgb received{0.0};
-    const size_t direct = row->elements.size();
-    for (size_t k = 0; k < direct + row->near.size(); ++k) {
-        const size_t j = k < direct ? row->elements[k] : row->elements[row->near[k - direct].entry];
+    // W arriving on element j: reflected into its radiosity and unshot
+    // radiosity, the rest absorbed.
+    const auto receive = [&](size_t j, const Rgb& incident) {
         const Element& el = m_scene.elements[j];
         const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
-        // W arriving on element j: from the whole shooter, or (near) from one of its elements
-        const Rgb incident =
-            k < direct ? farPower * row->factors[k]
-                       : m_elementPower[size_t(row->near[k - direct].shooterElement)] * row->near[k - direct].factor;
         const Rgb reflected = rho * incident;
         const Rgb delta = reflected / el.area; // dB_j = rho_j dB_i F_ij A_i / A_j
         m_radiosity[j] += delta;
@@ -168,6 +164,17 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
         m_patchPower[static_cast<size_t>(el.patch)] += reflected;
         m_absorbed += incident - reflected;
         received += incident;
+    };
+    for (size_t k = 0; k < row->elements.size(); ++k)
+        receive(row->elements[k], farPower * row->factors[k]); // from the whole shooter
+    // Near receivers: from each of the shooter's elements; a receiver's
+    // terms are consecutive.
+    for (size_t t = 0; t < row->near.size();) {
+        const std::uint32_t entry = row->near[t].entry;
+        Rgb incident{0.0};
+        for (; t < row->near.size() && row->near[t].entry == entry; ++t)
+            incident += m_elementPower[size_t(row->near[t].shooterElement)] * row->near[t].factor;
+        receive(row->elements[entry], incident);
     }
     m_escaped += power - received;
     m_lastShooter = shooter;

@@ -4,6 +4,19 @@
 
 namespace regio::test {
 
+// A room 3 x 2.5 x 4 with 0.25 m patches and a block 0.6 m across standing
+// 0.2 m from its west wall ("room.body.nx"), its side "block.body.nx"
+// facing it; closed.
+inline model::Scene blockBesideWall()
+{
+    model::Scene scene;
+    addMaterial(scene, "wall", Rgb{0.7});
+    addBox(scene, "room", {0, 0, 0}, {3, 2.5, 4}, "wall", true);
+    addBox(scene, "block", {0.2, 0, 1}, {0.8, 0.6, 1.6}, "wall");
+    scene.solver.patchSize = 0.25;
+    return scene;
+}
+
 // A 3 x 3 m floor, a 0.6 m box standing on it and a small lamp above, off to
 // one side so the box casts a shadow across the floor. Open: what leaves the
 // scene escapes.

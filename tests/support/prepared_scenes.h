@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace regio::test {
 
 inline solver::PreparedScene prepared(const model::Scene& scene, const solver::PrepareOptions& options = {})
@@ -20,6 +22,17 @@ inline solver::PreparedScene prepared(const model::Scene& scene, solver::Regions
     solver::PrepareOptions options;
     options.regions = regions;
     return prepared(scene, options);
+}
+
+// The index of the input face with the file's id `id`; fails the test and
+// gives 0 when there is none.
+inline size_t faceNamed(const solver::PreparedScene& s, const std::string& id)
+{
+    for (size_t f = 0; f < s.faces.size(); ++f)
+        if (s.faces[f].id == id)
+            return f;
+    ADD_FAILURE() << "no face " << id;
+    return 0;
 }
 
 } // namespace regio::test

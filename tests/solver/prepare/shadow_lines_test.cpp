@@ -24,15 +24,6 @@ namespace {
 
 const Vec3 kUp{0.0, 1.0, 0.0};
 
-size_t faceNamed(const PreparedScene& s, const std::string& id)
-{
-    for (size_t f = 0; f < s.faces.size(); ++f)
-        if (s.faces[f].id == id)
-            return f;
-    ADD_FAILURE() << "no face " << id;
-    return 0;
-}
-
 // The lamp vertex whose edge-vertex plane holds the line (the plane through
 // the box's vertical edge at the line's corner and the vertex), if any.
 bool drawnBy(const ShadowLine& line, const std::vector<Vec3>& lamp)
@@ -68,8 +59,8 @@ model::Scene boxUnderTwoLamps()
 TEST(ShadowLines, EveryLampVertexDrawsALineFromTheBoxsFootCornersAwayFromTheLampAsFarAsTheEdgesShadow)
 {
     const PreparedScene s = test::prepared(test::boxUnderLamp());
-    const size_t floor = faceNamed(s, "floor.face");
-    const std::vector<Vec3>& lamp = s.faces[faceNamed(s, "lamp.face")].polygon;
+    const size_t floor = test::faceNamed(s, "floor.face");
+    const std::vector<Vec3>& lamp = s.faces[test::faceNamed(s, "lamp.face")].polygon;
     const std::vector<ShadowLine> lines = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.0, 1000);
     ASSERT_FALSE(lines.empty());
     std::set<std::pair<double, double>> corners;
@@ -109,7 +100,7 @@ TEST(ShadowLines, EveryLampVertexDrawsALineFromTheBoxsFootCornersAwayFromTheLamp
 TEST(ShadowLines, ASolidNarrowerThanTheMinimumWidthDrawsNone)
 {
     const PreparedScene s = test::prepared(test::boxUnderLamp());
-    const size_t floor = faceNamed(s, "floor.face");
+    const size_t floor = test::faceNamed(s, "floor.face");
     // The box's footprint is 0.6 m square: twice its area over its perimeter is 0.3 m.
     EXPECT_FALSE(footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.29, 1000).empty());
     EXPECT_TRUE(footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.31, 1000).empty());
@@ -118,9 +109,9 @@ TEST(ShadowLines, ASolidNarrowerThanTheMinimumWidthDrawsNone)
 TEST(ShadowLines, PastTheBudgetTheLinesOfTheBrightestLightAreKept)
 {
     const PreparedScene s = test::prepared(boxUnderTwoLamps());
-    const size_t floor = faceNamed(s, "floor.face");
-    const std::vector<Vec3>& bright = s.faces[faceNamed(s, "lamp.face")].polygon;
-    const std::vector<Vec3>& dim = s.faces[faceNamed(s, "dim-lamp.face")].polygon;
+    const size_t floor = test::faceNamed(s, "floor.face");
+    const std::vector<Vec3>& bright = s.faces[test::faceNamed(s, "lamp.face")].polygon;
+    const std::vector<Vec3>& dim = s.faces[test::faceNamed(s, "dim-lamp.face")].polygon;
     const std::vector<ShadowLine> all = footShadowLines(s, floor, test::coversOf(s, floor), lightFaces(s), 0.0, 1000);
     int fromBright = 0, fromDim = 0;
     for (const ShadowLine& line : all) {
@@ -177,7 +168,7 @@ TEST(ShadowLines, NoCutLeavesASliverOrASharpCorner)
 TEST(ShadowLines, PreparationCutsTheFloorAlongThemAndListsTheCorners)
 {
     const PreparedScene s = test::prepared(test::boxUnderLamp());
-    const size_t floor = faceNamed(s, "floor.face");
+    const size_t floor = test::faceNamed(s, "floor.face");
     ASSERT_FALSE(s.shadowCorners.empty());
     for (const Vec3& corner : s.shadowCorners) {
         EXPECT_NEAR(std::abs(corner.x), 0.3, 1e-12);

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 
@@ -161,9 +162,14 @@ TEST(NearField, ALampElementJustUnderALargeCeilingElementSendsItWhatItSeesOfIt)
         std::vector<NearTerm> near;
         std::vector<double> farScale;
         correctNearField(s, int(p), everything, factors, near, farScale);
+        double reach = 0.0; // farther out, the facing ceiling's factors follow the hemicube's
+        for (int i = 0; i < 3; ++i)
+            reach = std::max(reach, glm::length(s.vertices[size_t(patch.vertices[size_t((i + 1) % 3)])] -
+                                                s.vertices[size_t(patch.vertices[size_t(i)])]));
         for (const NearTerm& t : near) {
             const Element& to = s.elements[everything[t.entry]];
-            if (s.faces[size_t(to.properties)].id != "room.body.py")
+            if (s.faces[size_t(to.properties)].id != "room.body.py" ||
+                glm::length(to.centroid - patch.centroid) >= reach)
                 continue;
             const Element& from = s.elements[size_t(patch.firstElement + t.shooterElement)];
             const double truth = meanFormFactor(s, from, to);
@@ -173,4 +179,76 @@ TEST(NearField, ALampElementJustUnderALargeCeilingElementSendsItWhatItSeesOfIt)
     }
     EXPECT_GE(checked, 16) << "the premise: ceiling elements near the lamp's patches";
     EXPECT_LT(worst, 0.05) << "taken at a ceiling element's centroid, up to 0.75";
+}
+
+TEST(NearField, AWallPatchSendsAFacingBlockWhatTheWholePatchGivesItWithTheHemicubesVisibility)
+{
+    // A block 0.2 m in front of a wall of 0.25 m patches (their faces face
+    // each other: InputFace::facing). Receivers on the block's side beyond
+    // the patch's reach but within three times it take the whole patch's
+    // factor, not the one from the patch's centre that a hemicube sees;
+    // what the hemicube does not see of them stays unseen.
+    const PreparedScene s = test::prepared(test::blockBesideWall());
+    int shooter = -1;
+    for (size_t p = 0; p < s.patches.size() && shooter < 0; ++p)
+        if (s.faces[size_t(s.patches[p].properties)].id == "room.body.nx" &&
+            glm::length(s.patches[p].centroid - Vec3{0, 0.3, 1.3}) < 0.15)
+            shooter = int(p);
+    ASSERT_GE(shooter, 0) << "the premise: a wall patch in front of the block";
+    const Patch& patch = s.patches[size_t(shooter)];
+    Element whole;
+    whole.vertices = patch.vertices;
+    whole.normal = s.properties[size_t(patch.properties)].plane.normal;
+    double reach = 0.0;
+    for (int i = 0; i < 3; ++i)
+        reach = std::max(reach, glm::length(s.vertices[size_t(patch.vertices[size_t((i + 1) % 3)])] -
+                                            s.vertices[size_t(patch.vertices[size_t(i)])]));
+
+    // An ideal hemicube: the factor from the patch's centre, every receiver
+    // seen whole but one, of which it sees half.
+    std::vector<std::uint32_t> elements;
+    std::vector<double> factors;
+    size_t halfSeen = 0;
+    for (size_t e = 0; e < s.elements.size(); ++e) {
+        const double f = pointToPolygonFormFactor(patch.centroid, whole.normal, triangleOf(s, s.elements[e]));
+        if (f <= 0.0)
+            continue;
+        const double distance = glm::length(s.elements[e].centroid - patch.centroid);
+        if (!halfSeen && s.faces[size_t(s.elements[e].properties)].id == "block.body.nx" && distance > reach &&
+            distance < 2.0 * reach)
+            halfSeen = elements.size();
+        elements.push_back(std::uint32_t(e));
+        factors.push_back(f);
+    }
+    ASSERT_GT(halfSeen, 0u);
+    factors[halfSeen] *= 0.5;
+    const std::vector<double> hemicube = factors;
+    std::vector<NearTerm> near;
+    std::vector<double> farScale;
+    correctNearField(s, shooter, elements, factors, near, farScale);
+
+    std::map<std::uint32_t, double> received; // F(patch -> receiver) from the near terms
+    for (const NearTerm& t : near)
+        received[t.entry] += t.factor * s.elements[size_t(patch.firstElement + t.shooterElement)].area / patch.area;
+    int checked = 0;
+    double worstCentre = 0.0, worst = 0.0;
+    for (const auto& [entry, factor] : received) {
+        const Element& e = s.elements[elements[entry]];
+        const double distance = glm::length(e.centroid - patch.centroid);
+        if (distance < reach)
+            continue;
+        EXPECT_EQ(s.faces[size_t(e.properties)].id, "block.body.nx") << "only the facing face, farther out";
+        EXPECT_LT(distance, kFacingReach * reach);
+        EXPECT_EQ(factors[entry], 0.0) << "its hemicube factor is taken over by the near terms";
+        const double seen = entry == halfSeen ? 0.5 : 1.0;
+        const double truth = seen * meanFormFactor(s, whole, e);
+        worst = std::max(worst, std::abs(factor / truth - 1.0));
+        worstCentre = std::max(worstCentre, std::abs(hemicube[entry] / truth - 1.0));
+        ++checked;
+    }
+    EXPECT_GE(checked, 12) << "the premise: the block's side beyond the patch's reach";
+    EXPECT_GT(worstCentre, 0.05) << "the premise: the patch's centre is off for some";
+    EXPECT_LT(worst, 0.01) << "the centre: " << worstCentre;
+    EXPECT_LT(worst, worstCentre / 5.0);
+    std::printf("facing receivers: %d, worst %.4f, from the centre %.4f\n", checked, worst, worstCentre);
 }
