@@ -2,7 +2,7 @@
 // editor shows differs from the independent pointwise reference
 // (tests/support/pointwise_reference.h).
 //
-//   accuracy_pictures SCENE.json OUT.png [CELL_METRES]
+//   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES]]
 //
 // solves the scene with its own settings to 0.1 % unshot, cuts every face
 // into square cells (1 cm by default), gathers the reference at each cell's
@@ -10,7 +10,10 @@
 // relative luminance error |shown - reference| / reference, 0 to 50 %
 // (larger errors take the end colour). Cells under a solid (the floor under
 // a block) are left out. Prints the error statistics of the cells and, per
-// face, how many are off by more than 10 % (too bright / too dark).
+// face, how many are off by more than 10 % (too bright / too dark). The
+// reference's patches are 3 cm by default; a room of several metres needs
+// coarser ones (10 cm: minutes), its cost growing with the square of their
+// number.
 #include "model/io/scene_json.h"
 #include "output/false_colour.h"
 #include "output/legend_overlay.h"
@@ -90,12 +93,15 @@ double percentile(std::vector<double> v, double q)
 int main(int argc, char** argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES]\n");
+        std::fprintf(stderr, "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES]]\n");
         return 2;
     }
     const double cellSize = argc > 3 ? std::atof(argv[3]) : 0.01;
-    if (!(cellSize > 0.0)) {
-        std::fprintf(stderr, "the cell size must be a positive number of metres\n");
+    test::PointwiseReferenceOptions referenceOptions;
+    if (argc > 4)
+        referenceOptions.patchSize = std::atof(argv[4]);
+    if (!(cellSize > 0.0) || !(referenceOptions.patchSize > 0.0)) {
+        std::fprintf(stderr, "the cell and patch sizes must be positive numbers of metres\n");
         return 2;
     }
     model::Result<model::Scene> loaded = model::loadSceneFile(argv[1]);
@@ -126,7 +132,7 @@ int main(int argc, char** argv)
     const output::LitMesh flat = output::litMeshFromSolution((*built)->prepared(), snapshot.radiosity);
     const test::LitMeshProbe flatProbe(flat);
 
-    const test::PointwiseReference reference(scene);
+    const test::PointwiseReference reference(scene, referenceOptions);
     const std::vector<test::FaceGeometry> faces = test::faceGeometry(scene);
     const std::vector<Cell> cells = cellsOf(faces, reference, cellSize);
     std::vector<test::GatherPoint> gather;
