@@ -2,7 +2,6 @@
 
 #include "model/geometry/geometry.h"
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -67,11 +66,6 @@ double pointPolygonDistance(const Vec3& p, std::span<const Vec3> polygon, const 
     return best;
 }
 
-struct Box {
-    Vec3 lo{std::numeric_limits<double>::infinity()};
-    Vec3 hi{-std::numeric_limits<double>::infinity()};
-};
-
 } // namespace
 
 double polygonGap(std::span<const Vec3> a, std::span<const Vec3> b)
@@ -101,7 +95,7 @@ std::vector<std::vector<int>> closeFacingFaces(const PreparedScene& scene, doubl
     // A gap below this share of the largest is a contact, not a gap.
     constexpr double kContactShare = 0.01;
 
-    std::vector<Box> boxes(count);
+    std::vector<model::Box3> boxes(count); // grown by the largest gap
     std::vector<Vec3> centroids(count);
     std::vector<size_t> order;
     for (size_t f = 0; f < count; ++f) {
@@ -109,23 +103,22 @@ std::vector<std::vector<int>> closeFacingFaces(const PreparedScene& scene, doubl
         if (polygon.size() < 3 || scene.faces[f].area <= 0.0)
             continue;
         for (const Vec3& p : polygon) {
-            boxes[f].lo = glm::min(boxes[f].lo, p - Vec3(largestGap));
-            boxes[f].hi = glm::max(boxes[f].hi, p + Vec3(largestGap));
+            boxes[f].extend(p - Vec3(largestGap));
+            boxes[f].extend(p + Vec3(largestGap));
         }
         centroids[f] = model::polygonCentroid(polygon);
         order.push_back(f);
     }
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return boxes[a].lo.x < boxes[b].lo.x; });
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return boxes[a].min.x < boxes[b].min.x; });
 
     const auto inFront = [&](size_t of, size_t plane) {
         return scene.properties[plane].plane.signedDistance(centroids[of]) > 0.0;
     };
     for (size_t i = 0; i < order.size(); ++i) {
         const size_t f = order[i];
-        for (size_t j = i + 1; j < order.size() && boxes[order[j]].lo.x <= boxes[f].hi.x; ++j) {
+        for (size_t j = i + 1; j < order.size() && boxes[order[j]].min.x <= boxes[f].max.x; ++j) {
             const size_t g = order[j];
-            if (boxes[g].lo.y > boxes[f].hi.y || boxes[g].hi.y < boxes[f].lo.y || boxes[g].lo.z > boxes[f].hi.z ||
-                boxes[g].hi.z < boxes[f].lo.z)
+            if (!boxes[f].overlapsInterior(boxes[g], 0.0))
                 continue;
             if (glm::dot(scene.properties[f].plane.normal, scene.properties[g].plane.normal) > kFacingCosine)
                 continue;

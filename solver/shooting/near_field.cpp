@@ -185,9 +185,7 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
         hemicube += factors[k];
         factors[k] = 0.0;
     }
-    double far = 0.0; // and of the far ones
-    for (double f : factors)
-        far += f;
+    const double far = total - hemicube; // and of the far ones
     if (far <= 0.0) {
         // Every receiver is near: each element of the shooter hands on the
         // hemicube's total, shared by its own contour factors.
