@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace regio::solver {
 
@@ -14,15 +16,29 @@ namespace {
 // How often (in elements) a render looks at the cancel flag: a relaxed
 // atomic load is cheap, but not per element.
 constexpr int kCancelCheckInterval = 256;
+// Turns of the hemicube about the normal per metre along each axis (the
+// R3 sequence's irrationals over a centimetre): patches a few centimetres
+// apart turn by unrelated angles, and a patch moved by a hair turns by one.
+constexpr Vec3 kTurnsPerMetre{75.48776662466927, 56.98402909980532, 43.01597090019468};
 } // namespace
 
 ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
-    const Properties& props = scene.properties[static_cast<size_t>(p.properties)];
-    const Vec3& a = scene.vertices[static_cast<size_t>(p.vertices[0])];
-    const Vec3& b = scene.vertices[static_cast<size_t>(p.vertices[1])];
-    return ShooterFrame::make(p.centroid, props.plane.normal, b - a);
+    const Vec3& n = scene.properties[static_cast<size_t>(p.properties)].plane.normal;
+    // A hemicube whose pixel rows run along the patch's edges sees the edges
+    // of a room that is built along the same axes (walls, shelves, a grid of
+    // lamp patches) line up with its rows, every shooter alike: a face seen
+    // edge-on covers one row of pixels or two by luck, and the luck is the
+    // same for every patch of a light. Turned by an angle that follows from
+    // where the patch lies, the rows cross those edges at other angles from
+    // every shooter, and the luck averages out over a light's patches
+    // (§5.6, aliasing; docs/accuracy.md, "Turned hemicubes"). The angle
+    // depends on the patch's centroid only, not on its numbering or its
+    // first corner, so a scene read back from a model file shoots alike.
+    const ShooterFrame base = ShooterFrame::make(p.centroid, n);
+    const double turn = 2.0 * std::numbers::pi * glm::dot(kTurnsPerMetre, p.centroid);
+    return ShooterFrame::make(p.centroid, n, std::cos(turn) * base.u + std::sin(turn) * base.v);
 }
 
 Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode)

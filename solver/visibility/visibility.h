@@ -78,8 +78,9 @@ inline constexpr HemicubeFaceSet kAllHemicubeFaces = (1u << kHemicubeFaceCount) 
 inline constexpr HemicubeFaceSet faceBit(HemicubeFace f) { return 1u << static_cast<int>(f); }
 
 // The hemicube frame of a shooting patch (§5.6): at its centroid, on its
-// plane, turned by its first edge. Every shot, view and order of a patch
-// uses this one frame.
+// plane, turned about the normal by an angle that follows from where the
+// centroid lies (visibility.cpp says why). Every shot, view and order of a
+// patch uses this one frame.
 ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch);
 
 struct VisibilityStats {

@@ -101,11 +101,13 @@ TEST_P(RoundTrip, GivesTheSameFacesAndTheSameRadiosity)
     //   - a triangle mesh has no first corner, and the importer starts every
     //     loop at its least one; the solution of a thin face depends on where
     //     its element strips start (paper §5.4);
-    //   - model files store coordinates as 32-bit floats. The solution of a
-    //     thin face seen edge-on from a light depends on which hemicube
-    //     pixels it happens to cover: moving the two-light room's lamp by
-    //     1e-7 m (its coordinates rounded to float) changes the front edge of
-    //     the lowest shelf board, 3 cm high, by 42 % at these settings.
+    //   - model files store coordinates as 32-bit floats. The two-light
+    //     room rounded to floats is meshed a little differently (1 658
+    //     patches against 1 648), and the underside of its lowest shelf
+    //     board, 5 cm above the floor, differs by 6.5 % at these settings.
+    //     (Before the hemicubes were turned by where each patch lies, the
+    //     board's 3 cm front edge, seen edge-on from the lamp, changed by
+    //     42 % with the pixels it happened to cover.)
     for (model::Object& object : original.objects)
         for (model::Part& part : object.parts) {
             for (model::Vec3& v : part.vertices)

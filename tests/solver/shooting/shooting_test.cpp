@@ -410,8 +410,10 @@ TEST(ShootingTiming, RunHonoursCancelWithinOneHundredMilliseconds)
 }
 
 // Overrelaxation changes the path, not the answer: the Cornell box solved to
-// 0.1 % unshot with and without it agrees within 0.5 % on every face, and
-// gets there in fewer shots.
+// 0.05 % unshot with and without it agrees within 0.5 % on every face
+// (measured 0.17 %; at 0.1 % unshot the two differ by what is left unshot,
+// up to 0.52 % on the short block's dark side), and gets there in fewer
+// shots.
 TEST(Shooting, OverrelaxationReachesTheSameAnswerInFewerShots)
 {
     const model::Scene scene = test::loadSample("cornell-box");
@@ -423,7 +425,7 @@ TEST(Shooting, OverrelaxationReachesTheSameAnswerInFewerShots)
         options.adaptive = false; // both on the same mesh
         options.hemicube = 100;
         options.maxIterations = 1000000;
-        options.convergence = 0.001;
+        options.convergence = 0.0005;
         auto built = Solver::create(scene, options);
         ASSERT_TRUE(built.ok());
         const std::atomic<bool> cancel{false};
