@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
 
@@ -95,7 +96,7 @@ double nearFactor(const Element& from, const Element& to, const Corner& corner, 
 // contour formula sees nothing of it. `weights` is scratch space.
 bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Element& whole, const Element& e,
                        double hemicubeFactor, std::uint32_t entry, std::vector<NearTerm>& near,
-                       std::vector<double>& perElement, std::vector<double>& weights)
+                       std::vector<double>& weights)
 {
     const auto corner = [&](int v) { return scene.vertices[size_t(v)]; };
     const std::array<Vec3, 3> seen{corner(e.vertices[0]), corner(e.vertices[1]), corner(e.vertices[2])};
@@ -116,10 +117,8 @@ bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Ele
     if (exact <= 0.0 || kernels <= 0.0)
         return false;
     const double scale = hemicubeFactor / atCentre * exact / kernels;
-    for (int s = 0; s < patch.elementCount; ++s) {
+    for (int s = 0; s < patch.elementCount; ++s)
         near.push_back({entry, s, scale * weights[size_t(s)]});
-        perElement[size_t(s)] += scale * weights[size_t(s)];
-    }
     return true;
 }
 
@@ -131,7 +130,8 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
 }
 
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
-                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale)
+                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale,
+                      const ParallelFor& parallelFor)
 {
     farScale.clear();
     const Patch& patch = scene.patches[size_t(shooter)];
@@ -146,44 +146,71 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
     whole.area = patch.area;
     whole.centroid = patch.centroid;
     whole.normal = scene.properties[size_t(patch.properties)].plane.normal;
-    const size_t first = near.size();
-    double total = 0.0; // the hemicube's factors of every receiver
-    std::vector<size_t> entries;
-    std::vector<double> weights; // scratch for appendFacingTerms
-    std::vector<double> perElement(size_t(patch.elementCount), 0.0);
+
+    // Which receivers are near (cheap, in order), then their terms (the
+    // contour formula: most of the time, so on several threads when the
+    // caller offers them), then the books (in order). Each receiver's terms
+    // depend on it alone and are joined in the receivers' order, so the row
+    // is the same, bit for bit, however many threads took part.
+    double total = 0.0;                              // the hemicube's factors of every receiver
+    std::vector<std::pair<size_t, bool>> candidates; // (row entry, facing rather than within reach)
     for (size_t k = 0; k < elements.size(); ++k) {
         total += factors[k];
         const Element& e = scene.elements[elements[k]];
         const double distance = glm::length(e.centroid - patch.centroid);
-        if (distance >= reach) {
-            if (distance < kFacingReach * reach &&
-                std::binary_search(facingFaces.begin(), facingFaces.end(), e.properties)) {
-                if (appendFacingTerms(scene, patch, whole, e, factors[k], std::uint32_t(k), near, perElement, weights))
-                    entries.push_back(k);
-            }
-            continue;
-        }
-        // The form factor from each shooter element: this close, the
-        // gradient across the shooter matters.
-        const size_t before = near.size();
-        for (int s = 0; s < patch.elementCount; ++s) {
-            const Element& from = scene.elements[size_t(patch.firstElement + s)];
-            const double factor = nearFactor(from, e, corner); // F(from -> e)
-            if (factor > 0.0) {
-                near.push_back({std::uint32_t(k), s, factor});
-                perElement[size_t(s)] += factor;
-            }
-        }
-        if (near.size() == before)
-            continue; // the contour formula sees nothing: keep the hemicube's factor
-        entries.push_back(k);
+        if (distance < reach)
+            candidates.emplace_back(k, false);
+        else if (distance < kFacingReach * reach &&
+                 std::binary_search(facingFaces.begin(), facingFaces.end(), e.properties))
+            candidates.emplace_back(k, true);
     }
-    if (entries.empty())
+    if (candidates.empty())
         return;
+    // Chunks of candidates: each computes its receivers' terms into its own list.
+    constexpr size_t kChunk = 64;
+    const size_t chunks = (candidates.size() + kChunk - 1) / kChunk;
+    std::vector<std::vector<NearTerm>> terms(chunks);
+    const auto computeChunks = [&](size_t firstChunk, size_t endChunk) {
+        std::vector<double> weights; // scratch for appendFacingTerms
+        for (size_t c = firstChunk; c < endChunk; ++c) {
+            std::vector<NearTerm>& out = terms[c];
+            for (size_t i = c * kChunk; i < std::min(candidates.size(), (c + 1) * kChunk); ++i) {
+                const auto [k, facing] = candidates[i];
+                const Element& e = scene.elements[elements[k]];
+                if (facing) {
+                    appendFacingTerms(scene, patch, whole, e, factors[k], std::uint32_t(k), out, weights);
+                    continue;
+                }
+                // The form factor from each shooter element: this close, the
+                // gradient across the shooter matters.
+                for (int s = 0; s < patch.elementCount; ++s) {
+                    const Element& from = scene.elements[size_t(patch.firstElement + s)];
+                    if (const double factor = nearFactor(from, e, corner); factor > 0.0) // F(from -> e)
+                        out.push_back({std::uint32_t(k), s, factor});
+                }
+            }
+        }
+    };
+    if (parallelFor && chunks > 1)
+        parallelFor(chunks, computeChunks);
+    else
+        computeChunks(0, chunks);
+
+    const size_t first = near.size();
+    for (const std::vector<NearTerm>& t : terms)
+        near.insert(near.end(), t.begin(), t.end());
+    if (near.size() == first)
+        return; // the contour formula sees none of them: keep the hemicube's factors
+    std::vector<double> perElement(size_t(patch.elementCount), 0.0);
     double hemicube = 0.0; // the hemicube's factors of the near receivers
-    for (size_t k : entries) {
-        hemicube += factors[k];
-        factors[k] = 0.0;
+    std::uint32_t last = std::numeric_limits<std::uint32_t>::max();
+    for (size_t t = first; t < near.size(); ++t) {
+        perElement[size_t(near[t].shooterElement)] += near[t].factor;
+        if (near[t].entry != last) { // a receiver's terms are consecutive
+            last = near[t].entry;
+            hemicube += factors[last];
+            factors[last] = 0.0;
+        }
     }
     const double far = total - hemicube; // and of the far ones
     if (far <= 0.0) {

@@ -33,7 +33,9 @@
 // the point-to-point kernel so that each sends its own unshot radiosity.
 #include "solver/prepare/prepared_scene.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace regio::solver {
@@ -61,7 +63,14 @@ struct NearTerm {
 // as it is (and farScale empty) when no receiver is near or the contour
 // formula sees none of them; when every receiver is near, farScale stays
 // empty and each shooter element's near factors are scaled to the total.
+//
+// The contour formula takes most of the time; `parallelFor`, when given,
+// runs body(begin, end) over chunk indices [0, count), each index once,
+// perhaps on several threads. The row is the same, bit for bit, with or
+// without it.
+using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
-                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale);
+                      std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale,
+                      const ParallelFor& parallelFor = {});
 
 } // namespace regio::solver

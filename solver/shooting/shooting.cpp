@@ -91,7 +91,9 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
             row.elements.push_back(static_cast<std::uint32_t>(j));
             row.factors.push_back(f);
         }
-    correctNearField(m_scene, shooter, row.elements, row.factors, row.near, row.farScale);
+    correctNearField(
+        m_scene, shooter, row.elements, row.factors, row.near, row.farScale,
+        [this](size_t count, const std::function<void(size_t, size_t)>& body) { m_renderer.parallelFor(count, body); });
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
     const std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) +

@@ -163,6 +163,20 @@ void HemicubeRenderer::onEveryThread(const std::function<void(int)>& task)
     }
 }
 
+void HemicubeRenderer::parallelFor(size_t count, const std::function<void(size_t begin, size_t end)>& body)
+{
+    const size_t n = m_painters.size();
+    if (n == 1 || count < 2) {
+        body(0, count);
+        return;
+    }
+    onEveryThread([&](int t) {
+        const size_t begin = count * size_t(t) / n, end = count * size_t(t + 1) / n;
+        if (begin < end)
+            body(begin, end);
+    });
+}
+
 RenderSplit HemicubeRenderer::split() const
 {
     if (m_forced)

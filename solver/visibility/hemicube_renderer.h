@@ -84,6 +84,12 @@ public:
     // Summed over the threads: each piece and region is counted once.
     VisibilityStats stats() const;
 
+    // Runs body(begin, end) on the renderer's threads over consecutive
+    // shares of [0, count), the caller taking the first, and returns when
+    // all are done: other work of a shot (the near field's contour
+    // formula) uses the threads the render keeps.
+    void parallelFor(size_t count, const std::function<void(size_t begin, size_t end)>& body);
+
 private:
     // Runs task(thread) on every thread, the caller being thread 0, and
     // returns when all have finished.

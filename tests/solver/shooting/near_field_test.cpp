@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <numbers>
 
@@ -251,4 +252,45 @@ TEST(NearField, AWallPatchSendsAFacingBlockWhatTheWholePatchGivesItWithTheHemicu
     EXPECT_LT(worst, 0.01) << "the centre: " << worstCentre;
     EXPECT_LT(worst, worstCentre / 5.0);
     std::printf("facing receivers: %d, worst %.4f, from the centre %.4f\n", checked, worst, worstCentre);
+}
+
+TEST(NearField, GivesTheSameRowBitForBitWhenItsContourFormulaRunsOnSeveralThreads)
+{
+    // A room of a lamp 2 cm under its ceiling: hundreds of near receivers
+    // per lamp patch, in many chunks. The chunks run in reverse order on
+    // purpose; the terms must come out in the receivers' order all the same.
+    model::Scene scene;
+    test::addMaterial(scene, "wall", Rgb{0.7});
+    test::addMaterial(scene, "lamp", Rgb{0.8}, Rgb{12.0});
+    test::addBox(scene, "room", {0, 0, 0}, {5, 2.5, 4}, "wall", true);
+    test::addBox(scene, "panel", {1.0, 2.44, 1.5}, {2.0, 2.48, 2.5}, "lamp");
+    test::addBox(scene, "block", {0.2, 0, 1}, {0.8, 0.6, 1.6}, "wall");
+    scene.solver.patchSize = 0.25;
+    const PreparedScene s = test::prepared(scene);
+    std::vector<std::uint32_t> everything;
+    for (size_t e = 0; e < s.elements.size(); ++e)
+        everything.push_back(std::uint32_t(e));
+    const ParallelFor backwards = [](size_t count, const std::function<void(size_t, size_t)>& body) {
+        for (size_t c = count; c-- > 0;)
+            body(c, c + 1);
+    };
+    int rowsWithManyChunks = 0;
+    for (size_t p = 0; p < s.patches.size(); p += 7) {
+        std::vector<double> one(everything.size(), 1.0 / double(everything.size()));
+        std::vector<double> many = one;
+        std::vector<NearTerm> nearOne, nearMany;
+        std::vector<double> farOne, farMany;
+        correctNearField(s, int(p), everything, one, nearOne, farOne);
+        correctNearField(s, int(p), everything, many, nearMany, farMany, backwards);
+        rowsWithManyChunks += nearOne.size() > 3 * 64;
+        ASSERT_EQ(nearMany.size(), nearOne.size());
+        for (size_t t = 0; t < nearOne.size(); ++t) {
+            EXPECT_EQ(nearMany[t].entry, nearOne[t].entry);
+            EXPECT_EQ(nearMany[t].shooterElement, nearOne[t].shooterElement);
+            EXPECT_EQ(nearMany[t].factor, nearOne[t].factor);
+        }
+        EXPECT_EQ(many, one);
+        EXPECT_EQ(farMany, farOne);
+    }
+    EXPECT_GT(rowsWithManyChunks, 4) << "the premise: rows whose near receivers fill several chunks";
 }

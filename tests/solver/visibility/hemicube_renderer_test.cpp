@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <utility>
+#include <vector>
 
 using namespace regio;
 using namespace regio::solver;
@@ -128,6 +129,27 @@ TEST(HemicubeRenderer, ACancelledRenderReportsItOnEveryThreadCount)
         ItemBuffer b = r.makeBuffer();
         EXPECT_FALSE(r.render(shooterFrameOfPatch(p, 0), b, &cancel)) << threads << " threads";
         // And it renders again afterwards.
+        EXPECT_TRUE(r.render(shooterFrameOfPatch(p, 0), b));
+    }
+}
+
+TEST(HemicubeRenderer, RunsOtherWorkOnItsThreadsEveryIndexOnce)
+{
+    const PreparedScene p = test::prepared(test::loadSample("cornell-box"));
+    const Hemicube h(32);
+    for (int threads : {1, 2, 5}) {
+        HemicubeRenderer r(p, h, model::Visibility::Painter, threads);
+        for (size_t count : {size_t(0), size_t(1), size_t(3), size_t(1000)}) {
+            std::vector<std::atomic<int>> seen(count);
+            r.parallelFor(count, [&](size_t begin, size_t end) {
+                for (size_t i = begin; i < end; ++i)
+                    seen[i].fetch_add(1);
+            });
+            EXPECT_TRUE(std::ranges::all_of(seen, [](const std::atomic<int>& n) { return n.load() == 1; }))
+                << count << " indices on " << threads << " threads";
+        }
+        // And it renders afterwards.
+        ItemBuffer b = r.makeBuffer();
         EXPECT_TRUE(r.render(shooterFrameOfPatch(p, 0), b));
     }
 }
