@@ -55,8 +55,9 @@ int editOf(const model::Scene& base, const model::Scene& scene)
 }
 
 // The child: edits, autosaves after every edit and saves the scene after
-// every third, until it is killed. Never returns.
-[[noreturn]] void editForever(const QString& scenePath)
+// every third, until it is killed; after each edit it writes a byte to
+// `progress`. Never returns.
+[[noreturn]] void editForever(const QString& scenePath, int progress)
 {
     auto* document = new SceneDocument;
     model::Diagnostics diagnostics;
@@ -69,6 +70,9 @@ int editOf(const model::Scene& base, const model::Scene& scene)
             ::_exit(4);
         if (i % 3 == 0 && !document->save(scenePath))
             ::_exit(5);
+        const char edit = 1;
+        if (::write(progress, &edit, 1) != 1)
+            ::_exit(6);
     }
 }
 
@@ -112,12 +116,25 @@ private slots:
         int kills = 0, midWork = 0, recovered = 0;
         int lastSaved = 0;
         for (int round = 0; round < 30; ++round) {
+            int progress[2];
+            QVERIFY(::pipe(progress) == 0);
             const pid_t child = ::fork();
             QVERIFY(child >= 0);
-            if (child == 0)
-                editForever(scenePath);
-            ::usleep(std::uniform_int_distribution<useconds_t>(2000, 60000)(random));
+            if (child == 0) {
+                ::close(progress[0]);
+                editForever(scenePath, progress[1]);
+            }
+            ::close(progress[1]);
+            // The kill comes after a few edits, however slow a loaded machine
+            // makes the child, and then at a random moment of its work.
+            const int edits = std::uniform_int_distribution<int>(1, 6)(random);
+            for (int i = 0; i < edits; ++i) {
+                char edit = 0;
+                QVERIFY2(::read(progress[0], &edit, 1) == 1, "the child stopped before it was killed");
+            }
+            ::usleep(std::uniform_int_distribution<useconds_t>(0, 20000)(random));
             ::kill(child, SIGKILL);
+            ::close(progress[0]);
             int status = 0;
             ::waitpid(child, &status, 0);
             QVERIFY2(WIFSIGNALED(status), "the child stopped before it was killed");
@@ -141,7 +158,7 @@ private slots:
             QVERIFY2(autosaved.ok(), "the recovery file is not whole after a kill");
             QVERIFY2(editOf(base, *autosaved) >= 0, "the recovery file is no state the editor had");
 
-            if (round % 5 == 4) {
+            if (midWork % 5 == 0) {
                 // The next start: the window offers the recovery and restores it.
                 MainWindowOptions options;
                 options.persistent = false;
