@@ -56,6 +56,28 @@ double meanFormFactor(const PreparedScene& s, const Element& from, const Element
     return sum / count;
 }
 
+// A room 5 x 2.5 x 4 with a lamp panel 1 m square and 4 cm thick whose
+// emitting top is 2 cm under the ceiling.
+model::Scene lampUnderCeiling(double patchSize)
+{
+    model::Scene scene;
+    test::addMaterial(scene, "wall", Rgb{0.7});
+    test::addMaterial(scene, "lamp", Rgb{0.8}, Rgb{12.0});
+    test::addBox(scene, "room", {0, 0, 0}, {5, 2.5, 4}, "wall", true);
+    test::addBox(scene, "panel", {1.0, 2.44, 1.5}, {2.0, 2.48, 2.5}, "lamp");
+    scene.solver.patchSize = patchSize;
+    return scene;
+}
+
+// Every element of `s`, as a row's receivers.
+std::vector<std::uint32_t> everyElement(const PreparedScene& s)
+{
+    std::vector<std::uint32_t> all;
+    for (size_t e = 0; e < s.elements.size(); ++e)
+        all.push_back(std::uint32_t(e));
+    return all;
+}
+
 } // namespace
 
 TEST(NearField, ThePointToPolygonFactorIsTheClosedFormOfARectangleOverACorner)
@@ -143,16 +165,8 @@ TEST(NearField, ALampElementJustUnderALargeCeilingElementSendsItWhatItSeesOfIt)
     // factor taken there is off by many times. The factors are the mean of
     // what the lamp element's points see of the ceiling element, within 0.05
     // of it (the contour formula at four points of the lamp element).
-    model::Scene scene;
-    test::addMaterial(scene, "wall", Rgb{0.7});
-    test::addMaterial(scene, "lamp", Rgb{0.8}, Rgb{12.0});
-    test::addBox(scene, "room", {0, 0, 0}, {5, 2.5, 4}, "wall", true);
-    test::addBox(scene, "panel", {1.0, 2.44, 1.5}, {2.0, 2.48, 2.5}, "lamp");
-    scene.solver.patchSize = 0.5;
-    const PreparedScene s = test::prepared(scene);
-    std::vector<std::uint32_t> everything;
-    for (size_t e = 0; e < s.elements.size(); ++e)
-        everything.push_back(std::uint32_t(e));
+    const PreparedScene s = test::prepared(lampUnderCeiling(0.5));
+    const std::vector<std::uint32_t> everything = everyElement(s);
     int checked = 0;
     double worst = 0.0;
     for (size_t p = 0; p < s.patches.size(); ++p) {
@@ -259,17 +273,10 @@ TEST(NearField, GivesTheSameRowBitForBitWhenItsContourFormulaRunsOnSeveralThread
     // A room of a lamp 2 cm under its ceiling: hundreds of near receivers
     // per lamp patch, in many chunks. The chunks run in reverse order on
     // purpose; the terms must come out in the receivers' order all the same.
-    model::Scene scene;
-    test::addMaterial(scene, "wall", Rgb{0.7});
-    test::addMaterial(scene, "lamp", Rgb{0.8}, Rgb{12.0});
-    test::addBox(scene, "room", {0, 0, 0}, {5, 2.5, 4}, "wall", true);
-    test::addBox(scene, "panel", {1.0, 2.44, 1.5}, {2.0, 2.48, 2.5}, "lamp");
-    test::addBox(scene, "block", {0.2, 0, 1}, {0.8, 0.6, 1.6}, "wall");
-    scene.solver.patchSize = 0.25;
+    model::Scene scene = lampUnderCeiling(0.25);
+    test::addBox(scene, "block", {0.2, 0, 1}, {0.8, 0.6, 1.6}, "wall"); // and a block with facing faces
     const PreparedScene s = test::prepared(scene);
-    std::vector<std::uint32_t> everything;
-    for (size_t e = 0; e < s.elements.size(); ++e)
-        everything.push_back(std::uint32_t(e));
+    const std::vector<std::uint32_t> everything = everyElement(s);
     const ParallelFor backwards = [](size_t count, const std::function<void(size_t, size_t)>& body) {
         for (size_t c = count; c-- > 0;)
             body(c, c + 1);
