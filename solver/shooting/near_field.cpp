@@ -92,9 +92,9 @@ double nearFactor(const Element& from, const Element& to, const Corner& corner, 
 // edge (near_field.h): the hemicube tells what share of it the shooter's
 // centre sees, the contour formula what the whole shooter gives it, and the
 // point-to-point kernel (cos cos / r^2) how that splits among the shooter's
-// elements, which send their own power. Appends its terms; false when the
+// elements, which send their own power. Appends its terms, none when the
 // contour formula sees nothing of it. `weights` is scratch space.
-bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Element& whole, const Element& e,
+void appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Element& whole, const Element& e,
                        double hemicubeFactor, std::uint32_t entry, std::vector<NearTerm>& near,
                        std::vector<double>& weights)
 {
@@ -102,7 +102,7 @@ bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Ele
     const std::array<Vec3, 3> seen{corner(e.vertices[0]), corner(e.vertices[1]), corner(e.vertices[2])};
     const double atCentre = formFactorOf(patch.centroid, whole.normal, seen); // what the hemicube stands for
     if (atCentre <= 0.0)
-        return false;
+        return;
     const double exact = nearFactor(whole, e, corner); // F(shooter -> e)
     weights.assign(size_t(patch.elementCount), 0.0);
     double kernels = 0.0; // the area-weighted mean weight
@@ -115,11 +115,10 @@ bool appendFacingTerms(const PreparedScene& scene, const Patch& patch, const Ele
         kernels += weights[size_t(s)] * from.area / patch.area;
     }
     if (exact <= 0.0 || kernels <= 0.0)
-        return false;
+        return;
     const double scale = hemicubeFactor / atCentre * exact / kernels;
     for (int s = 0; s < patch.elementCount; ++s)
         near.push_back({entry, s, scale * weights[size_t(s)]});
-    return true;
 }
 
 } // namespace

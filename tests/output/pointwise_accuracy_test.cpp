@@ -286,9 +286,8 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     EXPECT_LT(flatAll.median, 0.03);
     EXPECT_LT(flatAll.p90, 0.08);
     EXPECT_LT(flatContact.median, 0.04);
-    // Per face within 1 % (the target; the short block's sides are the
-    // worst, -0.77 % and -0.52 %; with hemicubes along the patches' edges
-    // -0.93 % and -0.39 %).
+    // Per face within 1 % (the target; the worst is a side of the short
+    // block, -0.77 %; with hemicubes along the patches' edges -0.93 %).
     EXPECT_EQ(perFace.size(), faces.size() - 2) << "every face but the blocks' bottoms";
     EXPECT_LT(std::abs(worstFaceError), 0.01) << worstFace;
 }
