@@ -1,5 +1,6 @@
 #include "solver/prepare/covered_parts.h"
 
+#include "solver/prepare/divisions.h"
 #include "solver/prepare/face_polygon.h"
 #include "solver/prepare/shadow_lines.h"
 
@@ -93,8 +94,8 @@ public:
         const auto [u0, u1, v0, v1] = extentOf(polygon);
         m_u0 = u0;
         m_v0 = v0;
-        m_nu = std::max(1, int(std::ceil((u1 - u0) / size)));
-        m_nv = std::max(1, int(std::ceil((v1 - v0) / size)));
+        m_nu = divisionsOf(u1 - u0, size);
+        m_nv = divisionsOf(v1 - v0, size);
         m_cells.resize(size_t(m_nu) * size_t(m_nv));
         for (int j = 0; j < m_nv; ++j)
             for (int i = 0; i < m_nu; ++i) {

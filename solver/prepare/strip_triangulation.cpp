@@ -1,5 +1,7 @@
 #include "solver/prepare/strip_triangulation.h"
 
+#include "solver/prepare/divisions.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -93,7 +95,7 @@ public:
         }
 
         // As many strips as the patch size asks for.
-        const int strips = std::max(1, int(std::ceil(height / m_patchSize - 1e-9)));
+        const int strips = divisionsOf(height, m_patchSize);
         std::vector<double> cutY(size_t(strips) + 1);
         std::vector<std::vector<int>> cuts(size_t(strips) + 1);
         for (int j = 0; j <= strips; ++j) {
@@ -193,7 +195,7 @@ private:
         if (a == b)
             return out;
         const Vec2 pa = m_mesh.points[size_t(a)], pb = m_mesh.points[size_t(b)];
-        const int pieces = std::max(1, int(std::ceil(glm::length(pb - pa) / m_patchSize - 1e-9)));
+        const int pieces = divisionsOf(glm::length(pb - pa), m_patchSize);
         for (int i = 1; i < pieces; ++i)
             out.push_back(addPoint(pa + (pb - pa) * (double(i) / double(pieces))));
         if (includeEnds)

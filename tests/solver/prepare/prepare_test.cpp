@@ -263,6 +263,29 @@ TEST(Prepare, PreparesTheSampleScenesInEveryRegionMode)
     EXPECT_EQ(scenes, 2);
 }
 
+TEST(Prepare, MeshesTheSampleScenesAlikeWithTheirCoordinatesRoundedToFloats)
+{
+    // Model files hold 32-bit floats: a scene that went through one must be
+    // cut into the same patches and elements, face by face, or its light
+    // changes with the rounding (solver/prepare/divisions.h). The two-light
+    // room's shelves are whole multiples of its 0.5 m patches.
+    for (const char* name : {"cornell-box", "two-lights-room"}) {
+        const model::Scene authored = test::loadSample(name);
+        model::Scene rounded = authored;
+        for (model::Object& object : rounded.objects)
+            for (model::Part& part : object.parts)
+                for (model::Vec3& v : part.vertices)
+                    v = model::Vec3(glm::vec3(v));
+        const model::Result<PreparedScene> a = prepareScene(authored);
+        const model::Result<PreparedScene> b = prepareScene(rounded);
+        ASSERT_TRUE(a.ok() && b.ok()) << name;
+        EXPECT_EQ(b->patches.size(), a->patches.size()) << name;
+        ASSERT_EQ(b->faces.size(), a->faces.size()) << name;
+        for (size_t f = 0; f < a->faces.size(); ++f)
+            EXPECT_EQ(b->faces[f].elements.size(), a->faces[f].elements.size()) << name << " " << a->faces[f].id;
+    }
+}
+
 // --- The stages (prepare.h) --------------------------------------------------
 
 TEST(PrepareStages, PrepareBspIsPrepareSceneWithoutTheMesh)

@@ -191,6 +191,21 @@ TEST(StripTriangulation, GivesTwoPatchesPerPatchSizedSquareOfARectangleThatIsAMu
                       0.5 * std::sqrt(2.0) + 1e-9);
 }
 
+TEST(StripTriangulation, CutsAWholeNumberOfPatchSizesAlikeWhenItsCoordinatesAreRoundedToFloats)
+{
+    // A 1 m by 0.5 m board at 0.5 m patches is two squares whether its
+    // corners lie exactly there or where 32-bit floats put them (a model
+    // file's coordinates, moved by up to 6e-8 relative): four patches.
+    for (const double x : {10.0, 10.0 + 1e-6, 10.0 - 1e-6})
+        for (const double w : {1.0, 1.0 + 2e-7, 1.0 - 2e-7}) {
+            const std::vector<Vec3> board{{x, 0, 0}, {x + w, 0, 0}, {x + w, 0.5 + 1e-7, 0}, {x, 0.5, 0}};
+            EXPECT_EQ(stripTriangulate(board, Vec3{0, 0, 1}, 0.5).triangles.size(), 4u) << x << " " << w;
+        }
+    // A length a thousandth of a patch or more beyond takes one piece more.
+    EXPECT_EQ(stripTriangulate(rectangle(1.0 + 1e-3, 0.5), Vec3{0, 0, 1}, 0.5).triangles.size(), 6u);
+    EXPECT_EQ(stripTriangulate(rectangle(1.0, 0.5 + 1e-3), Vec3{0, 0, 1}, 0.5).triangles.size(), 8u);
+}
+
 TEST(StripTriangulation, KeepsPatchesAboutThePatchSizeOnSlantedSides)
 {
     // Strips are at most 1.5 patch sizes high and pieces at most one long.
