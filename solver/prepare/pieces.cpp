@@ -334,7 +334,11 @@ private:
     // its face, -1 inside a mesh), by position in cells keyed with face -1.
     std::vector<int> m_outlineFace;
     std::unordered_map<CutCell, std::vector<int>, CutCellHash> m_outlineCells;
-    static constexpr double kContactDistance = 1e-7; // metres: faces meeting along a line
+    // Metres: faces meeting along a line. The builders' epsilon, not less:
+    // coordinates read from model files are rounded to 32-bit floats, which
+    // moves a corner by up to a few 1e-7 m in a room of a few metres, and a
+    // corner missed would leave a T-vertex between the two faces' meshes.
+    static constexpr double kContactDistance = model::kDistanceEpsilon;
 };
 
 void PieceBuilder::cutsNear(int face, const Vec3& lo, const Vec3& hi, std::vector<int>& into) const

@@ -266,9 +266,9 @@ TEST(Prepare, PreparesTheSampleScenesInEveryRegionMode)
 TEST(Prepare, MeshesTheSampleScenesAlikeWithTheirCoordinatesRoundedToFloats)
 {
     // Model files hold 32-bit floats: a scene that went through one must be
-    // cut into the same patches and elements, face by face, or its light
-    // changes with the rounding (solver/prepare/divisions.h). The two-light
-    // room's shelves are whole multiples of its 0.5 m patches.
+    // cut into the same patches, elements and pieces, face by face, or its
+    // light changes with the rounding (solver/prepare/divisions.h). The
+    // two-light room's shelves are whole multiples of its 0.5 m patches.
     for (const char* name : {"cornell-box", "two-lights-room"}) {
         const model::Scene authored = test::loadSample(name);
         model::Scene rounded = authored;
@@ -280,6 +280,9 @@ TEST(Prepare, MeshesTheSampleScenesAlikeWithTheirCoordinatesRoundedToFloats)
         const model::Result<PreparedScene> b = prepareScene(rounded);
         ASSERT_TRUE(a.ok() && b.ok()) << name;
         EXPECT_EQ(b->patches.size(), a->patches.size()) << name;
+        // And painted alike: the corners of faces that meet along a line
+        // are found on each other's edges (solver/prepare/pieces.cpp).
+        EXPECT_EQ(b->stats.pieces, a->stats.pieces) << name;
         ASSERT_EQ(b->faces.size(), a->faces.size()) << name;
         for (size_t f = 0; f < a->faces.size(); ++f)
             EXPECT_EQ(b->faces[f].elements.size(), a->faces[f].elements.size()) << name << " " << a->faces[f].id;
