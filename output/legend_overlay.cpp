@@ -56,14 +56,27 @@ int textWidth(const std::string& text, int scale)
 
 int textHeight(int scale) { return stb_easy_font_height(const_cast<char*>("0")) * scale; }
 
+constexpr int kFloatsPerVertex = 4; // x, y, z, packed colour
+
+// stb_easy_font's quads for `text`, four vertices each. It stops writing when
+// the buffer is full, silently: a glyph takes up to a dozen quads of 64
+// bytes ('0' with its slash, after a '5', lost its right stroke in a buffer
+// of 300 bytes a character), so the buffer is sized for sixteen.
+std::vector<float> textQuads(const std::string& text, int& quads)
+{
+    constexpr size_t kBytesPerQuad = 4 * kFloatsPerVertex * sizeof(float);
+    std::vector<float> buffer((text.size() * 16 + 1) * kBytesPerQuad / sizeof(float));
+    quads = stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(text.c_str()), nullptr, buffer.data(),
+                                static_cast<int>(buffer.size() * sizeof(float)));
+    return buffer;
+}
+
 // stb_easy_font turns text into axis-aligned quads; draw them scaled.
 void drawText(Image& image, int x, int y, const std::string& text, int scale, const Colour& colour)
 {
-    std::vector<char> buffer(text.size() * 300 + 64);
-    const int quads = stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(text.c_str()), nullptr, buffer.data(),
-                                          static_cast<int>(buffer.size()));
-    const float* v = reinterpret_cast<const float*>(buffer.data());
-    constexpr int kFloatsPerVertex = 4; // x, y, z, packed colour
+    int quads = 0;
+    const std::vector<float> buffer = textQuads(text, quads);
+    const float* v = buffer.data();
     for (int q = 0; q < quads; ++q) {
         const float* quad = v + q * 4 * kFloatsPerVertex;
         const float qx0 = quad[0], qy0 = quad[1];
@@ -76,6 +89,13 @@ void drawText(Image& image, int x, int y, const std::string& text, int scale, co
 }
 
 } // namespace
+
+int legendTextQuads(const std::string& text)
+{
+    int quads = 0;
+    textQuads(text, quads);
+    return quads;
+}
 
 LegendBox drawLegend(Image& image, const FalseColourLegend& legend)
 {

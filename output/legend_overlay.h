@@ -6,6 +6,8 @@
 #include "output/false_colour.h"
 #include "output/software_render.h"
 
+#include <string>
+
 namespace regio::output {
 
 // The part of the image the legend covers (for tests and callers that want
@@ -20,5 +22,9 @@ struct LegendBox {
 // the same bytes the model's false colours get. An image too small to hold a
 // readable legend (under 120 x 80 pixels) is left alone (empty box).
 LegendBox drawLegend(Image& image, const FalseColourLegend& legend);
+
+// How many quads the legend's text is drawn with (all of them, however long
+// the text: tests).
+int legendTextQuads(const std::string& text);
 
 } // namespace regio::output

@@ -192,6 +192,18 @@ TEST(Export, AFalseColourPictureCarriesItsLegend)
     EXPECT_LT(png.pixel(x, box.barBottom - 1)[1], 20) << "dark purple at the bottom";
 }
 
+TEST(Export, TheLegendDrawsEveryStrokeOfItsLabels)
+{
+    // A label is drawn with the quads of its characters, all of them: the
+    // '0' of "50" once lost its right stroke to a buffer too small.
+    for (const std::string label : {"0", "50", "30", "20", "100", "0.0005", "1e-05", "88888888", "%, log scale"}) {
+        int sum = 0;
+        for (char c : label)
+            sum += legendTextQuads(std::string(1, c));
+        EXPECT_EQ(legendTextQuads(label), sum) << label;
+    }
+}
+
 TEST(Export, TheAmbientTermIsAddedOnlyWhenAsked)
 {
     const auto folder = freshOutputFolder();
