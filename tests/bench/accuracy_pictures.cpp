@@ -195,7 +195,7 @@ int main(int argc, char** argv)
     render.height = 600;
     output::Image image = output::renderImage(picture, colours, *scene.camera, render);
     output::FalseColourLegend legend = ramp.legend();
-    legend.quantity = "|error|";
+    legend.quantity = "relative error";
     legend.unit = "%";
     output::drawLegend(image, legend);
     if (const model::Check written = output::writePng(argv[2], image); !written.ok()) {
