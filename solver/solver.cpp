@@ -81,12 +81,20 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     solver->m_settings = s;
     model::Diagnostics warnings = prepared.takeDiagnostics();
     solver->m_prepared = std::move(*prepared);
-    if (s.adaptive.enabled)
+    std::shared_ptr<SolutionMesh> initialMesh;
+    if (s.adaptive.enabled) {
         solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
+        // The shooter starts on the mesh split along contact lines, if any.
+        if (solver->m_refinement->splitContactLines() > 0) {
+            ActiveScene active = solver->m_refinement->takeActiveScene();
+            initialMesh = solver->anchoredMesh(active, 0);
+            solver->m_prepared = std::move(active.scene);
+        }
+    }
     solver->m_shooting = std::make_unique<Shooting>(
         solver->m_prepared, s.hemicube, s.visibility,
         ShootingOptions{options.threads, options.formFactorCacheBytes, options.overrelaxation});
-    solver->m_mesh = makeMesh(solver->m_prepared, 0);
+    solver->m_mesh = initialMesh ? std::move(initialMesh) : makeMesh(solver->m_prepared, 0);
     solver->m_stats.preprocessSeconds = secondsSince(start);
     {
         std::lock_guard<std::mutex> lock(solver->m_mutex);
@@ -156,16 +164,7 @@ bool Solver::refineIfDue(const std::atomic<bool>* cancel)
     // The new active scene and its mesh are built without the lock; readers
     // keep seeing the previous mesh with its radiosity until the swap.
     ActiveScene active = m_refinement->takeActiveScene();
-    std::shared_ptr<SolutionMesh> mesh = makeMesh(active.scene, m_mesh->revision + 1);
-    if (m_settings.adaptive.anchoring) {
-        std::vector<int> activeIndex(m_refinement->mesh().hierarchy().size(), -1);
-        for (size_t i = 0; i < active.sourceElement.size(); ++i)
-            activeIndex[size_t(active.sourceElement[i])] = int(i);
-        for (const OutputTriangle& t : m_refinement->mesh().outputTriangles()) {
-            mesh->anchoredTriangles.push_back(t.vertices);
-            mesh->anchoredElement.push_back(activeIndex[size_t(t.element)]);
-        }
-    }
+    std::shared_ptr<SolutionMesh> mesh = anchoredMesh(active, m_mesh->revision + 1);
     std::lock_guard<std::mutex> lock(m_mutex);
     // Assigned in place: the shooter and its visibility refer to m_prepared.
     m_prepared = std::move(active.scene);
@@ -176,6 +175,21 @@ bool Solver::refineIfDue(const std::atomic<bool>* cancel)
     m_stats.adaptiveSeconds += secondsSince(start);
     updateStatsLocked();
     return true;
+}
+
+std::shared_ptr<SolutionMesh> Solver::anchoredMesh(const ActiveScene& active, int revision) const
+{
+    std::shared_ptr<SolutionMesh> mesh = makeMesh(active.scene, revision);
+    if (m_settings.adaptive.anchoring) {
+        std::vector<int> activeIndex(m_refinement->mesh().hierarchy().size(), -1);
+        for (size_t i = 0; i < active.sourceElement.size(); ++i)
+            activeIndex[size_t(active.sourceElement[i])] = int(i);
+        for (const OutputTriangle& t : m_refinement->mesh().outputTriangles()) {
+            mesh->anchoredTriangles.push_back(t.vertices);
+            mesh->anchoredElement.push_back(activeIndex[size_t(t.element)]);
+        }
+    }
+    return mesh;
 }
 
 int Solver::step(int n)

@@ -95,6 +95,9 @@ private:
     // hand-over of the grown mesh. false = cancelled (resumed next time).
     bool refineIfDue(const std::atomic<bool>* cancel);
     void noteShot();
+    // The mesh to show for an active scene the refinement handed over: its
+    // elements, and with anchoring the conforming triangles (§5.7, Figure 5).
+    std::shared_ptr<SolutionMesh> anchoredMesh(const ActiveScene& active, int revision) const;
 
     std::unique_ptr<AdaptiveRefinement> m_refinement; // empty when adaptive subdivision is off
     bool m_handOverPending = false;

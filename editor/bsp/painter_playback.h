@@ -5,7 +5,10 @@
 // step (a slider, or a timer) or shown at once as a colour ramp. The order is
 // solver::painterOrder on the scene prepared exactly as the solver prepares
 // it (the scene's patch size, elements per patch and regions mode), so the
-// sequence is the solver's traversal, element for element.
+// sequence is the solver's traversal, element for element, on the mesh
+// before adaptive subdivision (§5.7) splits any element; its splits (along
+// contact lines before the first shot, at shadow borders later) change the
+// elements painted, not the order of the BSP nodes.
 #include "solver/prepare/prepared_scene.h"
 #include "solver/visibility/painter_order.h"
 

@@ -195,9 +195,8 @@ PlaneKey keyOf(const Plane& plane, bool& flipped)
     return key;
 }
 
-// For every face, the faces of solids that lie on it back to back (coplanar,
-// facing the other way) and whose bounds meet its own: the faces that may
-// cover part of it.
+} // namespace
+
 std::vector<std::vector<size_t>> coversOfFaces(const PreparedScene& scene)
 {
     const size_t count = scene.faces.size();
@@ -227,8 +226,6 @@ std::vector<std::vector<size_t>> coversOfFaces(const PreparedScene& scene)
     }
     return covers;
 }
-
-} // namespace
 
 std::vector<std::vector<std::vector<Vec3>>> uncoveredPieces(const PreparedScene& scene,
                                                             std::vector<Vec3>* shadowCorners)

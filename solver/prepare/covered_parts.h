@@ -16,6 +16,11 @@
 
 namespace regio::solver {
 
+// For every input face, the faces of solids that lie on it back to back
+// (coplanar, facing the other way) and whose bounds meet its own: the faces
+// that may cover part of it, ascending.
+std::vector<std::vector<size_t>> coversOfFaces(const PreparedScene& scene);
+
 // For every input face of `scene` (faces and properties filled, parallel):
 // the convex pieces of its polygon that the coplanar, opposite-facing faces
 // of solids leave uncovered, counter-clockwise around the face's normal. A

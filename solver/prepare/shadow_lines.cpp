@@ -105,15 +105,6 @@ double smallestAngle(const Polygon& polygon)
     return smallest;
 }
 
-// Twice the area over the perimeter: the width of a square or a long strip.
-double width(const Polygon& polygon)
-{
-    double perimeter = 0.0;
-    for (size_t i = 0; i < polygon.size(); ++i)
-        perimeter += glm::length(polygon[(i + 1) % polygon.size()] - polygon[i]);
-    return perimeter > 0.0 ? 2.0 * model::polygonArea(polygon) / perimeter : 0.0;
-}
-
 // How much direct light the light face sends to a point with normal n, as if
 // nothing stood between: luminance of the emission x the light's area x the
 // two cosines over pi d^2 from its centroid. Only to rank lights at a point.
@@ -130,6 +121,14 @@ double directLight(const PreparedScene& scene, size_t light, const Vec3& x, cons
 }
 
 } // namespace
+
+double footprintWidth(const std::vector<Vec3>& polygon)
+{
+    double perimeter = 0.0;
+    for (size_t i = 0; i < polygon.size(); ++i)
+        perimeter += glm::length(polygon[(i + 1) % polygon.size()] - polygon[i]);
+    return perimeter > 0.0 ? 2.0 * model::polygonArea(polygon) / perimeter : 0.0;
+}
 
 std::vector<size_t> lightFaces(const PreparedScene& scene)
 {
@@ -155,7 +154,7 @@ std::vector<ShadowLine> footShadowLines(const PreparedScene& scene, size_t face,
 
     for (size_t cover : covers) {
         const Polygon& footprint = scene.faces[cover].polygon;
-        if (width(footprint) < minWidth)
+        if (footprintWidth(footprint) < minWidth)
             continue;
         const Vec3& footprintNormal = scene.properties[cover].plane.normal;
         for (const Vec3& corner : footprint) {

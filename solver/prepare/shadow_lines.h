@@ -57,6 +57,10 @@ struct ShadowLine {
 // `minWidth` (twice its area over its perimeter) draw none. Past `maxLines`,
 // the lines of the lights that send the most direct light to their corner
 // are kept.
+// Twice the area over the perimeter: the width of a square or a long strip
+// (what solidMinWidth is compared with).
+double footprintWidth(const std::vector<Vec3>& polygon);
+
 // The faces of the scene that emit (with a polygon): the lights.
 std::vector<size_t> lightFaces(const PreparedScene& scene);
 

@@ -1,5 +1,7 @@
 #include "solver/shooting/adaptive_refinement.h"
 
+#include "solver/shooting/contact_lines.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -27,7 +29,36 @@ int AdaptiveRefinement::roundLimit() const
 {
     const int round = std::max(1, m_round ? m_roundsStarted : m_roundsStarted + 1);
     const double share = std::min(1.0, double(round) / double(std::max(1, m_policy.maxRounds)));
-    return m_initialElements + static_cast<int>((elementLimit() - m_initialElements) * share);
+    const int start = m_initialElements + m_contactElements;
+    return start + static_cast<int>((elementLimit() - start) * share);
+}
+
+int AdaptiveRefinement::splitContactLines()
+{
+    if (m_mesh || m_policy.contactPasses <= 0)
+        return 0;
+    const std::vector<std::vector<int>> contacts = contactFaces(m_hierarchy);
+    if (std::all_of(contacts.begin(), contacts.end(), [](const auto& faces) { return faces.empty(); }))
+        return 0;
+    // Before the first shot every element holds its emission, radiosity and
+    // unshot alike (as Shooting starts).
+    std::vector<Rgb> emission(m_hierarchy.elements.size());
+    for (size_t e = 0; e < emission.size(); ++e)
+        emission[e] = m_hierarchy.properties[size_t(m_hierarchy.elements[e].properties)].emission;
+    m_mesh = std::make_unique<AdaptiveMesh>(m_hierarchy, emission, emission, m_settings.anchoring);
+    m_sourceElement.resize(emission.size());
+    std::iota(m_sourceElement.begin(), m_sourceElement.end(), 0);
+    int splits = 0;
+    for (int pass = 0; pass < m_policy.contactPasses; ++pass) {
+        const int done = m_mesh->subdivide(elementsOnContactLines(*m_mesh, contacts), m_settings.minEdge);
+        if (done == 0)
+            break;
+        splits += done;
+    }
+    // Each split makes one active element four.
+    m_contactElements = 3 * splits;
+    m_activeElements += m_contactElements;
+    return splits;
 }
 
 void AdaptiveRefinement::startRound(std::span<const Rgb> radiosity, std::span<const Rgb> unshot)

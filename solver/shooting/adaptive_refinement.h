@@ -25,6 +25,11 @@
 //     flag after each slice (a few ms). A cancelled round keeps what it did
 //     and resumes with the next slice before the next shot: the result is the
 //     same as that of an uncancelled solve, only later.
+//   - Before the first shot, the elements along contact lines (where a solid
+//     stands on a face: solver/shooting/contact_lines.h) are split
+//     `contactPasses` times, on top of the growth budget: the criterion
+//     cannot see the fall-off there (no neighbour across the line), and
+//     taken from the budget they would starve the first round.
 //
 // New elements take their parent's values through AdaptiveMesh (radiosity
 // interpolated from the parent and its neighbours, mean-preserving; unshot
@@ -48,6 +53,7 @@ struct RefinementPolicy {
     double growthLimit = 4.0;   // active elements <= growthLimit x initial elements
     int sliceSize = 64;         // candidates split between two looks at the cancel flag
     int selectSliceSize = 2048; // elements judged by the criterion between two looks
+    int contactPasses = 2;      // splits of the elements along contact lines before the first shot
 };
 
 class AdaptiveRefinement {
@@ -57,6 +63,12 @@ public:
     AdaptiveRefinement(const PreparedScene& initial, const model::AdaptiveSettings& settings,
                        const RefinementPolicy& policy = RefinementPolicy{});
     ~AdaptiveRefinement();
+
+    // Before the first shot: splits the elements along contact lines (see the
+    // top of the file). Returns the number of splits; when there were any,
+    // takeActiveScene() has the mesh to shoot on (its radiosity and unshot
+    // the emission).
+    int splitContactLines();
 
     // After shot number `iteration` (1-based) of a patch that emits or not.
     void noteShot(int iteration, bool shooterEmits);
@@ -76,7 +88,10 @@ public:
 
     int rounds() const { return m_rounds; } // rounds that split something
     int initialElements() const { return m_initialElements; }
-    int elementLimit() const { return static_cast<int>(m_initialElements * m_policy.growthLimit); }
+    // The elements split along contact lines come on top of the growth.
+    int elementLimit() const { return static_cast<int>(m_initialElements * m_policy.growthLimit) + m_contactElements; }
+    // Active elements added along contact lines before the first shot.
+    int contactElements() const { return m_contactElements; }
     // What the round under way (or the next one) may grow the mesh to.
     int roundLimit() const;
     const AdaptiveMesh& mesh() const { return *m_mesh; }
@@ -104,6 +119,7 @@ private:
     std::vector<int> m_sourceElement; // element of the active scene -> hierarchy element
     int m_initialElements = 0;
     int m_activeElements = 0;
+    int m_contactElements = 0;
     int m_roundsStarted = 0;
     int m_rounds = 0;
     bool m_due = false;

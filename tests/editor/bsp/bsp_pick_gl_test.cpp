@@ -139,7 +139,9 @@ private slots:
         QVERIFY(!bsp->playbackPickActive()); // one pick
         PainterPlayback* playback = bsp->playback();
         QVERIFY(playback->active());
-        auto created = solver::Solver::create(document->scene());
+        solver::SolverOptions unsplit; // the prepared mesh, before adaptive subdivision splits any element
+        unsplit.adaptive = false;
+        auto created = solver::Solver::create(document->scene(), unsplit);
         QVERIFY(created.ok());
         const solver::PreparedScene& prepared = (*created)->prepared();
         const model::Vec3 eye = eyeAbovePick(*hit, glm::length(prepared.bounds.size()));

@@ -56,9 +56,13 @@ void compareWithSolver(const solver::PainterOrder& order, const solver::Prepared
     }
 }
 
+// A Solver made from the scene as regio-solve makes it, but with adaptive
+// subdivision off: the playback paints the prepared mesh, before any split.
 std::unique_ptr<solver::Solver> solverFor(const model::Scene& scene)
 {
-    model::Result<std::unique_ptr<solver::Solver>> created = solver::Solver::create(scene);
+    solver::SolverOptions options;
+    options.adaptive = false;
+    model::Result<std::unique_ptr<solver::Solver>> created = solver::Solver::create(scene, options);
     if (!created.ok())
         qFatal("the solver refused the scene");
     return std::move(*created);

@@ -1,0 +1,107 @@
+#include "solver/shooting/contact_lines.h"
+
+#include "solver/prepare/covered_parts.h"
+#include "solver/prepare/shadow_lines.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace regio::solver {
+
+namespace {
+
+// Inside the convex polygon (counter-clockwise around `normal`) or on its
+// outline, within eps.
+bool insideConvex(const std::vector<Vec3>& polygon, const Vec3& normal, const Vec3& p, double eps)
+{
+    const size_t n = polygon.size();
+    for (size_t k = 0; k < n; ++k) {
+        const Vec3& a = polygon[k];
+        const Vec3 edge = polygon[(k + 1) % n] - a;
+        const double length = glm::length(edge);
+        if (length > 0.0 && glm::dot(glm::cross(normal, edge), p - a) / length < -eps)
+            return false;
+    }
+    return true;
+}
+
+// The segment ab lies on face `face` (in its plane, its middle in its polygon).
+bool liesOn(const PreparedScene& scene, int face, const Vec3& a, const Vec3& b)
+{
+    const double eps = model::kDistanceEpsilon;
+    const Plane& plane = scene.properties[size_t(face)].plane;
+    if (std::abs(plane.signedDistance(a)) > eps || std::abs(plane.signedDistance(b)) > eps)
+        return false;
+    return insideConvex(scene.faces[size_t(face)].polygon, plane.normal, 0.5 * (a + b), eps);
+}
+
+} // namespace
+
+std::vector<std::vector<int>> contactFaces(const PreparedScene& scene)
+{
+    const size_t count = scene.faces.size();
+    std::vector<std::vector<int>> contacts(count);
+    const std::vector<std::vector<size_t>> coversOf = coversOfFaces(scene);
+    const double minWidth = ShadowLineLimits{}.solidMinWidth * scene.patchSize;
+    // The faces of each part, found once: a hall's floor may carry hundreds of solids.
+    std::map<std::pair<int, int>, std::vector<size_t>> facesOfPart;
+    for (size_t s = 0; s < count; ++s)
+        if (scene.faces[s].polygon.size() >= 3)
+            facesOfPart[{scene.faces[s].object, scene.faces[s].part}].push_back(s);
+    for (size_t f = 0; f < count; ++f) {
+        // A face that solids cover whole has no mesh to meet anything: a
+        // block's bottom, which a closed room's floor covers as much as the
+        // block covers the floor.
+        if (scene.faces[f].elements.empty())
+            continue;
+        for (size_t g : coversOf[f]) {
+            if (footprintWidth(scene.faces[g].polygon) < minWidth)
+                continue;
+            for (size_t s : facesOfPart[{scene.faces[g].object, scene.faces[g].part}]) {
+                if (s == g || s == f)
+                    continue;
+                contacts[f].push_back(int(s));
+                contacts[s].push_back(int(f));
+            }
+        }
+    }
+    for (std::vector<int>& faces : contacts) {
+        std::sort(faces.begin(), faces.end());
+        faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    }
+    return contacts;
+}
+
+std::vector<int> elementsOnContactLines(const AdaptiveMesh& mesh, const std::vector<std::vector<int>>& contacts)
+{
+    const PreparedScene& scene = mesh.scene();
+    std::vector<int> found;
+    for (size_t f = 0; f < scene.faces.size() && f < contacts.size(); ++f) {
+        if (contacts[f].empty())
+            continue;
+        for (int e : scene.faces[f].elements) {
+            if (!mesh.isActive(e))
+                continue;
+            const auto& v = scene.elements[size_t(e)].vertices;
+            bool touches = false;
+            for (int k = 0; k < 3 && !touches; ++k) {
+                if (!mesh.neighboursAcross(e, k).empty() || !mesh.partnersAcross(e, k).empty())
+                    continue;
+                const Vec3& a = scene.vertices[size_t(v[size_t(k)])];
+                const Vec3& b = scene.vertices[size_t(v[size_t((k + 1) % 3)])];
+                touches =
+                    std::any_of(contacts[f].begin(), contacts[f].end(), [&](int s) { return liesOn(scene, s, a, b); });
+            }
+            if (touches)
+                found.push_back(e);
+        }
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+} // namespace regio::solver

@@ -1,0 +1,40 @@
+#pragma once
+// Where a solid stands on a face (a block on the floor, a box on a box, a
+// lamp under the ceiling), the face and the solid's sides meet along its
+// foot: a contact line. Right beside it the radiosity falls steeply on both
+// faces (the corner sees itself, little of the light), and an element that
+// touches it is coarse: on the Cornell box, elements of a patch's size along
+// the blocks' feet read 15 % off at the 99th percentile within 2 cm of the
+// line while the rest of the floor reads 2 % (docs/accuracy.md). The §5.7
+// criterion splits them only where a neighbour differs, and the foot's
+// elements have no neighbour across the line: what the line hides, the
+// criterion cannot see.
+//
+// So these elements are split before the first shot, as a discontinuity
+// mesh would place its first lines (Heckbert 1992): the elements of a face
+// with an edge on the outline of the face that lies on the solid's side, and
+// those of the side with an edge on the face. Only solids at least
+// ShadowLineLimits::solidMinWidth patches wide count, as for the shadow
+// lines of their feet: a table leg or a shelf board would only add slivers.
+// The walls of a room meeting its floor are no contact line (the room is not
+// a solid standing on anything): the corner's fall-off is gentle there.
+#include "solver/shooting/adaptive_subdivision.h"
+
+#include <vector>
+
+namespace regio::solver {
+
+// For every face of the scene, the faces that meet it along a contact line:
+// for a face f that a solid's face g covers (solver/prepare/covered_parts.h),
+// the other faces of g's part, and f for each of them; none for a face that
+// solids cover whole (it has no mesh). Ascending.
+std::vector<std::vector<int>> contactFaces(const PreparedScene& scene);
+
+// The active elements of `mesh` with an edge that no element continues (on
+// the outline of its face's mesh) and that lies on a contact face's polygon
+// (both ends in its plane, the middle inside it, within
+// model::kDistanceEpsilon). `contacts` is contactFaces() of the scene the
+// mesh grew from. Ascending.
+std::vector<int> elementsOnContactLines(const AdaptiveMesh& mesh, const std::vector<std::vector<int>>& contacts);
+
+} // namespace regio::solver
