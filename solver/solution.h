@@ -30,6 +30,9 @@ struct SolverStats {
     int patches = 0;
     int elements = 0;       // active elements the shooter works on
     int adaptiveRounds = 0; // §5.7 refinement rounds that split elements
+    // Elements that the splits along contact lines added before the first
+    // shot (solver/shooting/contact_lines.h); part of `elements`.
+    int contactElements = 0;
     EnergyBalance energy;
     Rgb ambient{0.0};
     double unshotRatio = 0.0; // largest unshot / emitted over the emitting channels

@@ -95,6 +95,7 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
         solver->m_prepared, s.hemicube, s.visibility,
         ShootingOptions{options.threads, options.formFactorCacheBytes, options.overrelaxation});
     solver->m_mesh = initialMesh ? std::move(initialMesh) : makeMesh(solver->m_prepared, 0);
+    solver->m_stats.contactElements = solver->m_refinement ? solver->m_refinement->contactElements() : 0;
     solver->m_stats.preprocessSeconds = secondsSince(start);
     {
         std::lock_guard<std::mutex> lock(solver->m_mutex);

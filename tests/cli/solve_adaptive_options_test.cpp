@@ -110,6 +110,7 @@ TEST(SolveAdaptiveOptions, AdaptiveOffKeepsTheInitialMeshAndDoesNoRound)
     const json r = solveReport(scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "off"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["enabled"], false);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
+    EXPECT_EQ(r["adaptive"]["contactElements"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
     EXPECT_EQ(r["seconds"]["adaptive"].get<double>(), 0.0);
 }
@@ -134,7 +135,19 @@ TEST(SolveAdaptiveOptions, AMinimumEdgeLongerThanEveryElementSplitsNothing)
     const json r = solveReport(
         scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--min-edge", "50"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
+    EXPECT_EQ(r["adaptive"]["contactElements"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
+}
+
+TEST(SolveAdaptiveOptions, TheSplitsAlongContactLinesAreCountedBeforeTheFirstShot)
+{
+    ScratchDir scratch;
+    const int prepared =
+        solveReport(scratch, {"--iterations", "0", "--hemicube", "60", "--adaptive", "off"}, kTwoLights)["elements"];
+    const json r = solveReport(scratch, {"--iterations", "0", "--hemicube", "60", "--adaptive", "on"}, kTwoLights);
+    EXPECT_EQ(r["adaptive"]["rounds"], 0);
+    EXPECT_GT(r["adaptive"]["contactElements"].get<int>(), 0);
+    EXPECT_EQ(r["elements"].get<int>(), prepared + r["adaptive"]["contactElements"].get<int>());
 }
 
 TEST(SolveAdaptiveOptions, BadValuesAreUsageErrorsNamingTheOption)

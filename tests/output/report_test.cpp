@@ -40,6 +40,9 @@ TEST(AdaptiveSolver, TheReportGivesTheFinalElementCountAndTheRounds)
     EXPECT_TRUE(report["adaptive"]["enabled"].get<bool>());
     EXPECT_EQ(report["adaptive"]["rounds"].get<int>(), (*built)->stats().adaptiveRounds);
     EXPECT_GT(report["adaptive"]["rounds"].get<int>(), 0);
+    // The box stands on the floor: its foot's elements were split before the first shot.
+    EXPECT_EQ(report["adaptive"]["contactElements"].get<int>(), (*built)->stats().contactElements);
+    EXPECT_GT(report["adaptive"]["contactElements"].get<int>(), 0);
 }
 
 TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)
