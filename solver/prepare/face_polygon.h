@@ -72,4 +72,20 @@ inline std::vector<model::Vec3> clipConvex(const std::vector<model::Vec3>& polyg
     return out;
 }
 
+// Inside a convex polygon, counter-clockwise around `normal`, or on its
+// outline within eps (a point in the polygon's plane).
+inline bool insideConvex(const std::vector<model::Vec3>& polygon, const model::Vec3& normal, const model::Vec3& x,
+                         double eps = model::kDistanceEpsilon)
+{
+    const size_t n = polygon.size();
+    for (size_t k = 0; k < n; ++k) {
+        const model::Vec3& a = polygon[k];
+        const model::Vec3 edge = polygon[(k + 1) % n] - a;
+        const double length = glm::length(edge);
+        if (length > 0.0 && glm::dot(glm::cross(normal, edge), x - a) / length < -eps)
+            return false;
+    }
+    return true;
+}
+
 } // namespace regio::solver

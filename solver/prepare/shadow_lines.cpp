@@ -19,20 +19,6 @@ using Polygon = std::vector<Vec3>;
 
 constexpr double kSameDirection = 0.9994; // cos 2 degrees
 
-// Inside a convex polygon, counter-clockwise around `normal` (its edges
-// included, within the distance tolerance).
-bool inside(const Polygon& polygon, const Vec3& normal, const Vec3& x)
-{
-    const size_t n = polygon.size();
-    for (size_t i = 0; i < n; ++i) {
-        const Vec3& a = polygon[i];
-        const Vec3 inward = glm::normalize(glm::cross(normal, polygon[(i + 1) % n] - a));
-        if (glm::dot(inward, x - a) < -model::kDistanceEpsilon)
-            return false;
-    }
-    return true;
-}
-
 // The ends of the solid's edges that rise from its corner `corner` on the
 // face: the neighbours of that corner in the part's other faces, above the
 // face's plane.
@@ -170,7 +156,8 @@ std::vector<ShadowLine> footShadowLines(const PreparedScene& scene, size_t face,
                             continue;
                         // Only lines into what the solid leaves uncovered, on the face.
                         const Vec3 probe = corner + line.direction * (10.0 * model::kDistanceEpsilon);
-                        if (inside(footprint, footprintNormal, probe) || !inside(polygon, plane.normal, probe))
+                        if (insideConvex(footprint, footprintNormal, probe) ||
+                            !insideConvex(polygon, plane.normal, probe))
                             continue;
                         const bool known = std::any_of(
                             lines.begin() + std::ptrdiff_t(cornerBegin), lines.end(), [&](const ShadowLine& other) {

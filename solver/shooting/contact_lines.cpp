@@ -1,9 +1,8 @@
 #include "solver/shooting/contact_lines.h"
 
 #include "solver/prepare/covered_parts.h"
+#include "solver/prepare/face_polygon.h"
 #include "solver/prepare/shadow_lines.h"
-
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,29 +13,14 @@ namespace regio::solver {
 
 namespace {
 
-// Inside the convex polygon (counter-clockwise around `normal`) or on its
-// outline, within eps.
-bool insideConvex(const std::vector<Vec3>& polygon, const Vec3& normal, const Vec3& p, double eps)
-{
-    const size_t n = polygon.size();
-    for (size_t k = 0; k < n; ++k) {
-        const Vec3& a = polygon[k];
-        const Vec3 edge = polygon[(k + 1) % n] - a;
-        const double length = glm::length(edge);
-        if (length > 0.0 && glm::dot(glm::cross(normal, edge), p - a) / length < -eps)
-            return false;
-    }
-    return true;
-}
-
 // The segment ab lies on face `face` (in its plane, its middle in its polygon).
 bool liesOn(const PreparedScene& scene, int face, const Vec3& a, const Vec3& b)
 {
-    const double eps = model::kDistanceEpsilon;
     const Plane& plane = scene.properties[size_t(face)].plane;
+    const double eps = model::kDistanceEpsilon;
     if (std::abs(plane.signedDistance(a)) > eps || std::abs(plane.signedDistance(b)) > eps)
         return false;
-    return insideConvex(scene.faces[size_t(face)].polygon, plane.normal, 0.5 * (a + b), eps);
+    return insideConvex(scene.faces[size_t(face)].polygon, plane.normal, 0.5 * (a + b));
 }
 
 } // namespace

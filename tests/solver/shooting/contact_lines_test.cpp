@@ -32,21 +32,17 @@ AdaptiveMesh meshOf(PreparedScene& scene)
     return AdaptiveMesh(scene, zero, zero);
 }
 
-// p lies on the outline of the square [lo, hi]^2 in x and z, at height y.
-bool onFootOutline(const Vec3& p, double y, double lo, double hi)
-{
-    const double eps = 1e-9;
-    const auto within = [&](double c) { return c >= lo - eps && c <= hi + eps; };
-    if (std::abs(p.y - y) > eps || !within(p.x) || !within(p.z))
-        return false;
-    return std::abs(p.x - lo) < eps || std::abs(p.x - hi) < eps || std::abs(p.z - lo) < eps || std::abs(p.z - hi) < eps;
-}
-
 // The elements with an edge along the foot of the block [lo, hi]^2 standing
-// at height y: both ends on the foot's outline and on one side of it.
+// at height y: both ends at that height on one side of the foot's square.
 // Computed from the coordinates alone, apart from the mesh's topology.
 std::set<int> elementsAlongFoot(const PreparedScene& s, double y, double lo, double hi)
 {
+    const double eps = 1e-9;
+    const auto within = [&](double c) { return c >= lo - eps && c <= hi + eps; };
+    // On the side x = side (axis 0) or z = side (axis 2), within the square.
+    const auto onSide = [&](const Vec3& p, int axis, double side) {
+        return std::abs(p.y - y) < eps && std::abs(p[axis] - side) < eps && within(p.x) && within(p.z);
+    };
     std::set<int> out;
     for (const InputFace& face : s.faces)
         for (int e : face.elements) {
@@ -54,12 +50,10 @@ std::set<int> elementsAlongFoot(const PreparedScene& s, double y, double lo, dou
             for (int k = 0; k < 3; ++k) {
                 const Vec3& a = s.vertices[size_t(v[size_t(k)])];
                 const Vec3& b = s.vertices[size_t(v[size_t((k + 1) % 3)])];
-                const bool sameSide = std::abs(a.x - b.x) < 1e-9
-                                          ? std::abs(a.x - lo) < 1e-9 || std::abs(a.x - hi) < 1e-9
-                                          : std::abs(a.z - lo) < 1e-9 || std::abs(a.z - hi) < 1e-9;
-                if (onFootOutline(a, y, lo, hi) && onFootOutline(b, y, lo, hi) && sameSide &&
-                    (std::abs(a.x - b.x) < 1e-9 || std::abs(a.z - b.z) < 1e-9))
-                    out.insert(e);
+                for (int axis : {0, 2})
+                    for (double side : {lo, hi})
+                        if (onSide(a, axis, side) && onSide(b, axis, side))
+                            out.insert(e);
             }
         }
     return out;
