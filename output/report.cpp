@@ -24,6 +24,8 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     report["visibility"] = model::visibilityName(settings.visibility);
     report["regions"] = model::regionsModeName(settings.regions);
     report["hemicube"] = Hemicube(settings.hemicube).resolution();
+    // The lights' shots render a finer one (solver/shooting/shooting.h).
+    report["lightHemicube"] = solver.shooting().lightHemicubeResolution();
     report["patchSize"] = settings.patchSize;
     report["elementsPerPatch"] = settings.elementsPerPatch;
     report["maxIterations"] = settings.maxIterations;

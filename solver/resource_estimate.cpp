@@ -1,6 +1,7 @@
 #include "solver/resource_estimate.h"
 
 #include "model/geometry/geometry.h"
+#include "solver/shooting/shooting.h"
 #include "solver/visibility/hemicube_renderer.h"
 
 #include <sys/resource.h>
@@ -66,10 +67,12 @@ ResourceEstimate estimateResources(const model::Scene& scene, const model::Solve
     e.meshBytes = e.maxElements * kBytesPerElement;
     // Every painter keeps an item buffer of the whole hemicube (a top face
     // N x N and four sides N x N/2), ids and, for the z-buffer, depths; the
-    // helper threads a stretch of the same size.
+    // helper threads a stretch of the same size; the lights' finer hemicube
+    // (solver/shooting/shooting.h) has painters of its own.
     const double n = settings.hemicube;
+    const double light = lightHemicubeResolution(settings.hemicube);
     const int painters = std::min(resolveThreadCount(threads), HemicubeRenderer::kMaxThreads);
-    e.hemicubeBytes = 2.0 * painters * 3.0 * n * n * 8.0;
+    e.hemicubeBytes = 2.0 * painters * 3.0 * (n * n + light * light) * 8.0;
     e.cacheBytes = double(cacheBytes);
     return e;
 }

@@ -220,8 +220,13 @@ void PreviewSession::serveHemicube()
     if (!request)
         return;
     const solver::PreparedScene& prepared = m_solver->prepared();
-    const auto view =
-        solver::renderHemicubeView(prepared, request->first, request->second, m_solver->settings().visibility);
+    // A light's shots render a finer hemicube than the others (solver/shooting/shooting.h):
+    // show it as the shot sees it, as much finer as the solver's is.
+    const solver::Shooting& shooting = m_solver->shooting();
+    const int resolution = shooting.shotResolution(request->first) > shooting.hemicubeResolution()
+                               ? solver::lightHemicubeResolution(request->second)
+                               : request->second;
+    const auto view = solver::renderHemicubeView(prepared, request->first, resolution, m_solver->settings().visibility);
     if (!view)
         return;
     HemicubeImages images = hemicubeImages(*view, prepared);

@@ -106,7 +106,8 @@ public:
     model::Diagnostics diagnostics() const;
 
     // The item buffer of a patch, rendered on the worker between two shots;
-    // a Hemicube event follows.
+    // a Hemicube event follows. A light's patch renders at
+    // solver::lightHemicubeResolution(resolution), as its shots do.
     void requestHemicube(int patch, int resolution);
     std::optional<HemicubeImages> takeHemicube();
 

@@ -16,16 +16,29 @@ namespace {
 double magnitude(const Rgb& c) { return 0.2126 * std::abs(c.r) + 0.7152 * std::abs(c.g) + 0.0722 * std::abs(c.b); }
 } // namespace
 
+int lightHemicubeResolution(int resolution)
+{
+    const int scene = Hemicube(resolution).resolution();
+    return std::max(scene, std::min(2 * scene, kLightHemicubeMaxResolution));
+}
+
 Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Visibility mode,
                    const ShootingOptions& options)
     : m_scene(scene)
     , m_hemicube(hemicubeResolution)
     , m_renderer(scene, m_hemicube, mode, options.threads)
     , m_buffer(m_renderer.makeBuffer())
+    , m_lightHemicube(options.finerLightHemicubes ? solver::lightHemicubeResolution(hemicubeResolution) : 2)
     , m_cacheBudget(options.formFactorCacheBytes)
     , m_overrelaxation(options.overrelaxation)
 {
     dropRows();
+    const bool anyLight =
+        std::any_of(scene.properties.begin(), scene.properties.end(), [](const Properties& p) { return p.emits(); });
+    if (options.finerLightHemicubes && anyLight && m_lightHemicube.resolution() > m_hemicube.resolution()) {
+        m_lightRenderer = std::make_unique<HemicubeRenderer>(scene, m_lightHemicube, mode, options.threads);
+        m_lightBuffer.emplace(m_lightRenderer->makeBuffer());
+    }
     const size_t elements = scene.elements.size();
     m_radiosity.assign(elements, Rgb{0.0});
     m_unshot.assign(elements, Rgb{0.0});
@@ -60,6 +73,26 @@ int Shooting::selectShooter() const
     return best;
 }
 
+int Shooting::shotResolution(int patch) const
+{
+    const bool light =
+        patch >= 0 && static_cast<size_t>(patch) < m_scene.patches.size() &&
+        m_scene.properties[static_cast<size_t>(m_scene.patches[static_cast<size_t>(patch)].properties)].emits();
+    return light ? lightHemicubeResolution() : hemicubeResolution();
+}
+
+VisibilityStats Shooting::visibilityStats() const
+{
+    VisibilityStats stats = m_renderer.stats();
+    if (m_lightRenderer) {
+        const VisibilityStats light = m_lightRenderer->stats();
+        stats.regionsCulled += light.regionsCulled;
+        stats.elementsVisited += light.elementsVisited;
+        stats.elementsRasterised += light.elementsRasterised;
+    }
+    return stats;
+}
+
 void Shooting::dropRows()
 {
     m_rows.assign(m_scene.patches.size(), FormFactorRow{});
@@ -74,12 +107,16 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     if (m_kept[p])
         return &m_rows[p];
 
-    if (!m_renderer.render(shooterFrameOfPatch(m_scene, shooter), m_buffer, cancel))
+    const Properties& shooterProperties = m_scene.properties[static_cast<size_t>(m_scene.patches[p].properties)];
+    const bool light = m_lightRenderer && shooterProperties.emits();
+    HemicubeRenderer& renderer = light ? *m_lightRenderer : m_renderer;
+    ItemBuffer& buffer = light ? *m_lightBuffer : m_buffer;
+    if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
         return nullptr;
     ++m_renderedShots;
     const size_t elements = m_scene.elements.size();
     m_perItem.assign(elements + kFirstElementItem, 0.0);
-    m_buffer.accumulate(m_hemicube, m_perItem);
+    buffer.accumulate(light ? m_lightHemicube : m_hemicube, m_perItem);
 
     FormFactorRow& row = m_scratch;
     row.elements.clear();

@@ -74,6 +74,7 @@ TEST(SolveCommand, SolvesASampleSceneAndWritesAReportWithEveryRequiredField)
     EXPECT_EQ(r["status"], "solved");
     EXPECT_EQ(r["visibility"], "painter");
     EXPECT_EQ(r["hemicube"], 60);
+    EXPECT_EQ(r["lightHemicube"], 120); // the lights' shots twice as fine
     EXPECT_EQ(r["iterations"], 5);
     EXPECT_GT(r["patches"].get<int>(), 0);
     EXPECT_GE(r["elements"].get<int>(), r["patches"].get<int>());
@@ -129,6 +130,7 @@ TEST(SolveCommand, OptionsOverrideTheScenesSettingsAndShowInTheReport)
     EXPECT_EQ(r["visibility"], "zbuffer");
     EXPECT_EQ(r["regions"], "none");
     EXPECT_EQ(r["hemicube"], 42); // odd resolutions round up to even
+    EXPECT_EQ(r["lightHemicube"], 84);
     EXPECT_EQ(r["iterations"], 2);
     EXPECT_EQ(r["bsp"]["regions"], 1);
 }

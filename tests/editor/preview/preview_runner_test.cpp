@@ -34,6 +34,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -534,6 +535,20 @@ private slots:
             }
         }
         QVERIFY(coloured > 64 * 64 / 2); // the closed box fills the top face
+
+        // A patch of the lamp (its elements are the brightest): as its shots
+        // see it, at twice the resolution (solver/shooting/shooting.h).
+        const auto& radiosity = runner.frame()->snapshot.radiosity;
+        const auto brightest = std::max_element(radiosity.begin(), radiosity.end(),
+                                                [](const auto& a, const auto& b) { return a.g < b.g; });
+        const int lampPatch = runner.frame()->elementPatch[size_t(brightest - radiosity.begin())];
+        ready.clear();
+        runner.requestHemicube(lampPatch, 64);
+        QVERIFY(ready.wait(10000));
+        const auto lamp = ready.first().first().value<HemicubeImages>();
+        QCOMPARE(lamp.patch, lampPatch);
+        QCOMPARE(lamp.faces[0].width, 128);
+        QCOMPARE(lamp.faces[1].height, 64);
     }
 
     void theConvergencePlotHasOnePointPerIteration()

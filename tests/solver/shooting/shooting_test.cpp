@@ -208,6 +208,57 @@ TEST(Shooting, PatchUnshotPowerIsTheAreaWeightedSumOfItsElements)
     }
 }
 
+// The lights' shots render a hemicube twice as fine (at most 1024, never
+// coarser than the scene's); the other shots keep the scene's.
+TEST(Shooting, TheLightsShootWithAHemicubeTwiceAsFine)
+{
+    EXPECT_EQ(lightHemicubeResolution(200), 400);
+    EXPECT_EQ(lightHemicubeResolution(3), 8) << "the scene's resolution rounded up to even first";
+    EXPECT_EQ(lightHemicubeResolution(600), kLightHemicubeMaxResolution);
+    EXPECT_EQ(lightHemicubeResolution(2000), 2000);
+
+    const model::Scene scene = twoLamps();
+    PrepareOptions options;
+    options.patchSize = 0.5;
+    const model::Result<PreparedScene> prepared = prepareScene(scene, options);
+    ASSERT_TRUE(prepared.ok());
+    const PreparedScene& p = *prepared;
+    const auto emits = [&](int patch) {
+        return p.properties[static_cast<size_t>(p.patches[static_cast<size_t>(patch)].properties)].emits();
+    };
+    ShootingOptions coarse;
+    coarse.finerLightHemicubes = false;
+    Shooting finer(p, 32, model::Visibility::Painter);
+    Shooting at32(p, 32, model::Visibility::Painter, coarse);
+    Shooting at64(p, 64, model::Visibility::Painter, coarse);
+    EXPECT_EQ(finer.hemicubeResolution(), 32);
+    EXPECT_EQ(finer.lightHemicubeResolution(), 64);
+    EXPECT_EQ(at32.lightHemicubeResolution(), 32);
+
+    // A light's shot: the factors of a 64 hemicube, to the last bit.
+    ASSERT_TRUE(emits(finer.selectShooter()));
+    for (Shooting* s : {&finer, &at32, &at64})
+        ASSERT_EQ(s->shoot(), ShotResult::Shot);
+    ASSERT_EQ(finer.lastShooter(), at64.lastShooter());
+    EXPECT_EQ(finer.lastFormFactors(), at64.lastFormFactors());
+    EXPECT_NE(finer.lastFormFactors(), at32.lastFormFactors());
+
+    // Once the lights have shot, a reflector's shot: the scene's 32.
+    while (emits(finer.selectShooter()))
+        ASSERT_EQ(finer.shoot(), ShotResult::Shot);
+    ASSERT_EQ(finer.shoot(), ShotResult::Shot);
+    const int reflector = finer.lastShooter();
+    Shooting plain(p, 32, model::Visibility::Painter, coarse);
+    std::vector<Rgb> unshot(p.elements.size(), Rgb{0.0});
+    const Patch& patch = p.patches[static_cast<size_t>(reflector)];
+    for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e)
+        unshot[static_cast<size_t>(e)] = Rgb{1.0};
+    plain.replaceElementState(plain.radiosity(), unshot);
+    ASSERT_EQ(plain.shoot(), ShotResult::Shot);
+    ASSERT_EQ(plain.lastShooter(), reflector);
+    EXPECT_EQ(finer.lastFormFactors(), plain.lastFormFactors());
+}
+
 TEST(Shooting, ReplacingTheElementStateRecomputesPatchPowersForAGrownMesh)
 {
     // Adaptive subdivision (§5.7) hands over new per-element arrays; the patch

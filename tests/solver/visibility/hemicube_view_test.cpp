@@ -34,7 +34,10 @@ TEST(HemicubeView, FormFactorsEqualThoseOfTheShotOfThatPatch)
         ASSERT_TRUE(solver);
         const int shooter = solver->shooting().selectShooter();
         ASSERT_GE(shooter, 0);
-        const auto view = renderHemicubeView(solver->prepared(), shooter, 64, mode);
+        // A light's shot renders twice as fine as the scene's 64 (solver/shooting/shooting.h).
+        EXPECT_EQ(solver->shooting().shotResolution(shooter), 128);
+        const auto view =
+            renderHemicubeView(solver->prepared(), shooter, solver->shooting().shotResolution(shooter), mode);
         ASSERT_TRUE(view);
         solver->step(1);
         ASSERT_EQ(solver->shooting().lastShooter(), shooter);
