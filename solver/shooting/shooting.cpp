@@ -28,6 +28,7 @@ Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Vi
     , m_hemicube(hemicubeResolution)
     , m_renderer(scene, m_hemicube, mode, options.threads)
     , m_buffer(m_renderer.makeBuffer())
+    // Unused (and kept smallest) when the lights render as the rest.
     , m_lightHemicube(options.finerLightHemicubes ? solver::lightHemicubeResolution(hemicubeResolution) : 2)
     , m_cacheBudget(options.formFactorCacheBytes)
     , m_overrelaxation(options.overrelaxation)
@@ -73,23 +74,22 @@ int Shooting::selectShooter() const
     return best;
 }
 
+bool Shooting::emits(int patch) const
+{
+    return m_scene.properties[static_cast<size_t>(m_scene.patches[static_cast<size_t>(patch)].properties)].emits();
+}
+
 int Shooting::shotResolution(int patch) const
 {
-    const bool light =
-        patch >= 0 && static_cast<size_t>(patch) < m_scene.patches.size() &&
-        m_scene.properties[static_cast<size_t>(m_scene.patches[static_cast<size_t>(patch)].properties)].emits();
+    const bool light = patch >= 0 && static_cast<size_t>(patch) < m_scene.patches.size() && emits(patch);
     return light ? lightHemicubeResolution() : hemicubeResolution();
 }
 
 VisibilityStats Shooting::visibilityStats() const
 {
     VisibilityStats stats = m_renderer.stats();
-    if (m_lightRenderer) {
-        const VisibilityStats light = m_lightRenderer->stats();
-        stats.regionsCulled += light.regionsCulled;
-        stats.elementsVisited += light.elementsVisited;
-        stats.elementsRasterised += light.elementsRasterised;
-    }
+    if (m_lightRenderer)
+        stats += m_lightRenderer->stats();
     return stats;
 }
 
@@ -107,8 +107,7 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     if (m_kept[p])
         return &m_rows[p];
 
-    const Properties& shooterProperties = m_scene.properties[static_cast<size_t>(m_scene.patches[p].properties)];
-    const bool light = m_lightRenderer && shooterProperties.emits();
+    const bool light = m_lightRenderer && emits(shooter);
     HemicubeRenderer& renderer = light ? *m_lightRenderer : m_renderer;
     ItemBuffer& buffer = light ? *m_lightBuffer : m_buffer;
     if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
@@ -169,7 +168,7 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // their own emission, far more than what comes back to them, so an
     // overshoot would only leave a debt that each of a light's patches must
     // shoot again to take back.
-    const double omega = m_scene.properties[static_cast<size_t>(patch.properties)].emits() ? 1.0 : m_overrelaxation;
+    const double omega = emits(shooter) ? 1.0 : m_overrelaxation;
     const double kept = 1.0 - omega; // of the shooter's unshot radiosity
     m_elementPower.clear();
     for (int e = patch.firstElement; e < patch.firstElement + patch.elementCount; ++e) {

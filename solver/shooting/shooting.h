@@ -176,6 +176,8 @@ private:
     // The row of `shooter`: kept, or rendered now (and kept if it fits).
     // Null when cancelled.
     const FormFactorRow* rowOf(int shooter, const std::atomic<bool>* cancel);
+    // The patch's face emits (a light's patch): it shoots without overshoot, at the lights' resolution.
+    bool emits(int patch) const;
     void dropRows();
 
     const PreparedScene& m_scene;

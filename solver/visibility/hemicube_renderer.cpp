@@ -116,11 +116,8 @@ HemicubeRenderer::~HemicubeRenderer()
 VisibilityStats HemicubeRenderer::stats() const
 {
     VisibilityStats sum;
-    for (const auto& p : m_painters) {
-        sum.regionsCulled += p->stats().regionsCulled;
-        sum.elementsVisited += p->stats().elementsVisited;
-        sum.elementsRasterised += p->stats().elementsRasterised;
-    }
+    for (const auto& p : m_painters)
+        sum += p->stats();
     return sum;
 }
 

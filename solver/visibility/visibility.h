@@ -89,6 +89,14 @@ struct VisibilityStats {
     // one piece.
     std::int64_t elementsVisited = 0;
     std::int64_t elementsRasterised = 0; // not rejected by outcodes
+
+    VisibilityStats& operator+=(const VisibilityStats& other)
+    {
+        regionsCulled += other.regionsCulled;
+        elementsVisited += other.elementsVisited;
+        elementsRasterised += other.elementsRasterised;
+        return *this;
+    }
 };
 
 class Visibility {
