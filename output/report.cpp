@@ -39,9 +39,13 @@ nlohmann::json solveReport(const std::string& sceneName, const Solver& solver, s
     report["unshotRatio"] = stats.unshotRatio;
     report["patches"] = stats.patches;
     report["elements"] = stats.elements; // final count, after adaptive subdivision (§5.7)
-    report["adaptive"] = {{"enabled", settings.adaptive.enabled}, {"threshold", settings.adaptive.threshold},
-                          {"minEdge", settings.adaptive.minEdge}, {"anchoring", settings.adaptive.anchoring},
-                          {"rounds", stats.adaptiveRounds},       {"contactElements", stats.contactElements}};
+    report["adaptive"] = {{"enabled", settings.adaptive.enabled},
+                          {"threshold", settings.adaptive.threshold},
+                          {"minEdge", settings.adaptive.minEdge},
+                          {"anchoring", settings.adaptive.anchoring},
+                          {"rounds", stats.adaptiveRounds},
+                          {"contactElements", stats.contactElements},
+                          {"penumbraElements", stats.penumbraElements}};
     // Element pieces painted per BSP node (solver/prepare/pieces.h) and any that found
     // no node (should be none).
     report["pieces"] = prepared.stats.pieces;

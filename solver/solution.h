@@ -33,6 +33,9 @@ struct SolverStats {
     // Elements that the splits along contact lines added before the first
     // shot (solver/shooting/contact_lines.h); part of `elements`.
     int contactElements = 0;
+    // Elements that the splits in the solids' penumbrae added before the
+    // first shot (solver/shooting/penumbrae.h); part of `elements`.
+    int penumbraElements = 0;
     EnergyBalance energy;
     Rgb ambient{0.0};
     double unshotRatio = 0.0; // largest unshot / emitted over the emitting channels

@@ -84,8 +84,9 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
     std::shared_ptr<SolutionMesh> initialMesh;
     if (s.adaptive.enabled) {
         solver->m_refinement = std::make_unique<AdaptiveRefinement>(solver->m_prepared, s.adaptive);
-        // The shooter starts on the mesh split along contact lines, if any.
-        if (solver->m_refinement->splitContactLines() > 0) {
+        // The shooter starts on the mesh split along contact lines and in
+        // penumbrae, if any.
+        if (solver->m_refinement->splitBeforeFirstShot() > 0) {
             ActiveScene active = solver->m_refinement->takeActiveScene();
             initialMesh = solver->anchoredMesh(active, 0);
             solver->m_prepared = std::move(active.scene);
@@ -96,6 +97,7 @@ model::Result<std::unique_ptr<Solver>> Solver::create(const model::Scene& scene,
         ShootingOptions{options.threads, options.formFactorCacheBytes, options.overrelaxation});
     solver->m_mesh = initialMesh ? std::move(initialMesh) : makeMesh(solver->m_prepared, 0);
     solver->m_stats.contactElements = solver->m_refinement ? solver->m_refinement->contactElements() : 0;
+    solver->m_stats.penumbraElements = solver->m_refinement ? solver->m_refinement->penumbraElements() : 0;
     solver->m_stats.preprocessSeconds = secondsSince(start);
     {
         std::lock_guard<std::mutex> lock(solver->m_mutex);

@@ -24,17 +24,12 @@ constexpr double kSameDirection = 0.9994; // cos 2 degrees
 // face's plane.
 std::vector<Vec3> risingEdgeEnds(const PreparedScene& scene, size_t cover, const Vec3& corner, const Plane& plane)
 {
-    const InputFace& coverFace = scene.faces[cover];
     std::vector<Vec3> ends;
-    // The faces are in scene order, so the part's faces are the run around
-    // the cover that starts faceInPart places before it.
-    for (size_t h = cover - size_t(coverFace.faceInPart); h < scene.faces.size(); ++h) {
-        const InputFace& face = scene.faces[h];
-        if (face.object != coverFace.object || face.part != coverFace.part)
-            break;
+    const auto [first, last] = facesOfPart(scene, cover);
+    for (size_t h = first; h < last; ++h) {
         if (h == cover)
             continue;
-        const Polygon& loop = face.polygon;
+        const Polygon& loop = scene.faces[h].polygon;
         for (size_t i = 0; i < loop.size(); ++i) {
             if (glm::length(loop[i] - corner) > model::kDistanceEpsilon)
                 continue;
@@ -91,9 +86,18 @@ double smallestAngle(const Polygon& polygon)
     return smallest;
 }
 
-// How much direct light the light face sends to a point with normal n, as if
-// nothing stood between: luminance of the emission x the light's area x the
-// two cosines over pi d^2 from its centroid. Only to rank lights at a point.
+} // namespace
+
+std::pair<size_t, size_t> facesOfPart(const PreparedScene& scene, size_t face)
+{
+    const InputFace& of = scene.faces[face];
+    const size_t first = face - size_t(of.faceInPart);
+    size_t last = first;
+    while (last < scene.faces.size() && scene.faces[last].object == of.object && scene.faces[last].part == of.part)
+        ++last;
+    return {first, last};
+}
+
 double directLight(const PreparedScene& scene, size_t light, const Vec3& x, const Vec3& n)
 {
     const Vec3 d = model::polygonCentroid(scene.faces[light].polygon) - x;
@@ -105,8 +109,6 @@ double directLight(const PreparedScene& scene, size_t light, const Vec3& x, cons
     return std::max(0.0, cosHere) * std::max(0.0, cosThere) * luminance(scene.properties[light].emission) *
            scene.faces[light].area / (std::numbers::pi * d2);
 }
-
-} // namespace
 
 double footprintWidth(const std::vector<Vec3>& polygon)
 {

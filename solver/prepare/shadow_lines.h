@@ -24,6 +24,7 @@
 #include "solver/prepare/prepared_scene.h"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace regio::solver {
@@ -60,6 +61,16 @@ struct ShadowLine {
 // Twice the area over the perimeter: the width of a square or a long strip
 // (what solidMinWidth is compared with).
 double footprintWidth(const std::vector<Vec3>& polygon);
+
+// The faces of the part that face `face` belongs to, [first, last): a run in
+// scene order that starts faceInPart places before it.
+std::pair<size_t, size_t> facesOfPart(const PreparedScene& scene, size_t face);
+
+// How much direct light the light face `light` sends to a point x with
+// normal n, as if nothing stood between: luminance of the emission x the
+// light's area x the two cosines over pi d^2 from its centroid. Only to rank
+// lights at a point.
+double directLight(const PreparedScene& scene, size_t light, const Vec3& x, const Vec3& n);
 
 // The faces of the scene that emit (with a polygon): the lights.
 std::vector<size_t> lightFaces(const PreparedScene& scene);

@@ -1,6 +1,7 @@
 #include "solver/shooting/adaptive_refinement.h"
 
 #include "solver/shooting/contact_lines.h"
+#include "solver/shooting/penumbrae.h"
 
 #include <algorithm>
 #include <numeric>
@@ -29,16 +30,18 @@ int AdaptiveRefinement::roundLimit() const
 {
     const int round = std::max(1, m_round ? m_roundsStarted : m_roundsStarted + 1);
     const double share = std::min(1.0, double(round) / double(std::max(1, m_policy.maxRounds)));
-    const int start = m_initialElements + m_contactElements;
+    const int start = m_initialElements + m_contactElements + m_penumbraElements;
     return start + static_cast<int>((elementLimit() - start) * share);
 }
 
-int AdaptiveRefinement::splitContactLines()
+int AdaptiveRefinement::splitBeforeFirstShot()
 {
-    if (m_mesh || m_policy.contactPasses <= 0)
+    if (m_mesh)
         return 0;
-    const std::vector<std::vector<int>> contacts = contactFaces(m_hierarchy);
-    if (std::all_of(contacts.begin(), contacts.end(), [](const auto& faces) { return faces.empty(); }))
+    const std::vector<std::vector<int>> contacts =
+        m_policy.contactPasses > 0 ? contactFaces(m_hierarchy) : std::vector<std::vector<int>>{};
+    const std::vector<Penumbra> bands = m_policy.penumbraPasses > 0 ? penumbrae(m_hierarchy) : std::vector<Penumbra>{};
+    if (bands.empty() && std::all_of(contacts.begin(), contacts.end(), [](const auto& faces) { return faces.empty(); }))
         return 0;
     // Before the first shot every element holds its emission, radiosity and
     // unshot alike (as Shooting starts).
@@ -48,16 +51,49 @@ int AdaptiveRefinement::splitContactLines()
     m_mesh = std::make_unique<AdaptiveMesh>(m_hierarchy, emission, emission, m_settings.anchoring);
     m_sourceElement.resize(emission.size());
     std::iota(m_sourceElement.begin(), m_sourceElement.end(), 0);
-    int splits = 0;
-    for (int pass = 0; pass < m_policy.contactPasses; ++pass) {
+    int contactSplits = 0;
+    for (int pass = 0; pass < m_policy.contactPasses && !contacts.empty(); ++pass) {
         const int done = m_mesh->subdivide(elementsOnContactLines(*m_mesh, contacts), m_settings.minEdge);
         if (done == 0)
             break;
-        splits += done;
+        contactSplits += done;
     }
+    const int penumbraSplits = splitPenumbrae(bands);
     // Each split makes one active element four.
-    m_contactElements = 3 * splits;
-    m_activeElements += m_contactElements;
+    m_contactElements = 3 * contactSplits;
+    m_penumbraElements = 3 * penumbraSplits;
+    m_activeElements += m_contactElements + m_penumbraElements;
+    return contactSplits + penumbraSplits;
+}
+
+int AdaptiveRefinement::splitPenumbrae(const std::vector<Penumbra>& bands)
+{
+    const double minEdge = m_settings.minEdge * m_policy.penumbraMinEdge;
+    int budget = static_cast<int>(m_policy.penumbraShare * (m_policy.growthLimit - 1.0) * m_initialElements);
+    int splits = 0;
+    for (int pass = 0; pass < m_policy.penumbraPasses && !bands.empty(); ++pass) {
+        // The brightest lights' bands first; a band whose elements no longer
+        // fit the budget is left whole (a band split halfway would grade
+        // across the middle of the penumbra).
+        std::vector<char> taken(m_mesh->scene().elements.size(), 0);
+        std::vector<int> chosen;
+        for (const Penumbra& band : bands) {
+            std::vector<int> elements;
+            for (int e : elementsInPenumbra(*m_mesh, band))
+                if (!taken[size_t(e)] && m_mesh->canSplit(e, minEdge))
+                    elements.push_back(e);
+            if (3 * static_cast<int>(chosen.size() + elements.size()) > budget)
+                continue;
+            for (int e : elements)
+                taken[size_t(e)] = 1;
+            chosen.insert(chosen.end(), elements.begin(), elements.end());
+        }
+        const int done = m_mesh->subdivide(chosen, minEdge);
+        if (done == 0)
+            break;
+        splits += done;
+        budget -= 3 * done;
+    }
     return splits;
 }
 

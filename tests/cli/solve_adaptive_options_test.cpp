@@ -111,6 +111,7 @@ TEST(SolveAdaptiveOptions, AdaptiveOffKeepsTheInitialMeshAndDoesNoRound)
     EXPECT_EQ(r["adaptive"]["enabled"], false);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
     EXPECT_EQ(r["adaptive"]["contactElements"], 0);
+    EXPECT_EQ(r["adaptive"]["penumbraElements"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
     EXPECT_EQ(r["seconds"]["adaptive"].get<double>(), 0.0);
 }
@@ -136,10 +137,11 @@ TEST(SolveAdaptiveOptions, AMinimumEdgeLongerThanEveryElementSplitsNothing)
         scratch, {"--iterations", "20", "--hemicube", "60", "--adaptive", "on", "--min-edge", "50"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
     EXPECT_EQ(r["adaptive"]["contactElements"], 0);
+    EXPECT_EQ(r["adaptive"]["penumbraElements"], 0);
     EXPECT_EQ(r["elements"].get<int>(), initial);
 }
 
-TEST(SolveAdaptiveOptions, TheSplitsAlongContactLinesAreCountedBeforeTheFirstShot)
+TEST(SolveAdaptiveOptions, TheSplitsAlongContactLinesAndInPenumbraeAreCountedBeforeTheFirstShot)
 {
     ScratchDir scratch;
     const int prepared =
@@ -147,7 +149,9 @@ TEST(SolveAdaptiveOptions, TheSplitsAlongContactLinesAreCountedBeforeTheFirstSho
     const json r = solveReport(scratch, {"--iterations", "0", "--hemicube", "60", "--adaptive", "on"}, kTwoLights);
     EXPECT_EQ(r["adaptive"]["rounds"], 0);
     EXPECT_GT(r["adaptive"]["contactElements"].get<int>(), 0);
-    EXPECT_EQ(r["elements"].get<int>(), prepared + r["adaptive"]["contactElements"].get<int>());
+    EXPECT_GT(r["adaptive"]["penumbraElements"].get<int>(), 0);
+    EXPECT_EQ(r["elements"].get<int>(),
+              prepared + r["adaptive"]["contactElements"].get<int>() + r["adaptive"]["penumbraElements"].get<int>());
 }
 
 TEST(SolveAdaptiveOptions, BadValuesAreUsageErrorsNamingTheOption)

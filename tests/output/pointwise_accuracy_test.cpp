@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 #include <vector>
 
 using namespace regio;
@@ -199,6 +200,31 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     print("smooth, contact lines", smoothContact);
     print("flat, all points", flatAll);
     print("flat, contact lines", flatContact);
+    // The faces a solid stands on or that stand on one: those with points
+    // beside contact lines.
+    std::set<std::string> touching;
+    for (const SurfacePoint& p : points)
+        if (p.kind == SurfacePoint::Kind::Contact)
+            touching.insert(p.face);
+    const auto tooBright = [&](const std::vector<Sample>& samples) {
+        std::map<std::string, size_t> perFace;
+        for (const Sample& s : samples)
+            if (touching.count(s.where->face) && s.shown > 1.05 * s.reference)
+                ++perFace[s.where->face];
+        return perFace;
+    };
+    const auto total = [](const std::map<std::string, size_t>& perFace) {
+        size_t sum = 0;
+        for (const auto& [face, count] : perFace)
+            sum += count;
+        return sum;
+    };
+    const std::map<std::string, size_t> smoothBright = tooBright(smoothSamples);
+    const size_t smoothTooBright = total(smoothBright);
+    std::printf("points of faces touching a solid more than 5 %% too bright: smooth %zu (", smoothTooBright);
+    for (const auto& [face, count] : smoothBright)
+        std::printf(" %s %zu", face.c_str(), count);
+    std::printf(" ), flat %zu\n", total(tooBright(flatSamples)));
     printWorst("smooth", smoothSamples, 8);
     printWorst("flat", flatSamples, 5);
     // Per face: the mean over a 1 cm grid (uniform, so the area-weighted
@@ -249,11 +275,14 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     // with the contour formula three patches out, hemicubes turned about
     // the normal by where the patch lies, the elements along the blocks'
     // feet split twice before the first shot, the lamp's shots at a
-    // hemicube of 400, against the reference at 2 cm patches: median
-    // 0.40 %, 90th percentile 1.68 %, 99th 4.7 %, worst 27 %; beside
-    // contact lines median 1.01 %, 90th 2.87 %, 99th 8.6 %, worst 17 %.
-    // Flat: median 1.46 %, 90th 4.83 %; beside contact lines median 1.9 %.
-    // (The lamp at 200 as the rest: 0.47, 1.92, 5.2, worst 29; beside
+    // hemicube of 400, the elements in the blocks' penumbrae split twice
+    // before the first shot, against the reference at 2 cm patches: median
+    // 0.40 %, 90th percentile 1.59 %, 99th 4.15 %, worst 33 %; beside
+    // contact lines median 0.92 %, 90th 2.61 %, 99th 6.7 %, worst 8.6 %.
+    // Flat: median 1.47 %, 90th 4.84 %; beside contact lines median 1.9 %.
+    // (Without the penumbrae's splits: 0.40, 1.68, 4.7, worst 27; beside
+    // contact lines 1.01, 2.87, 8.6, worst 17; flat 1.46, 4.83, 1.9.
+    // The lamp at 200 as the rest: 0.47, 1.92, 5.2, worst 29; beside
     // contact lines 1.15, 3.01, 8.7, worst 19; flat 1.80, 5.45, 2.2.
     // Without the splits along the feet: 0.47, 1.95, 6.7,
     // worst 29; beside contact lines 1.30, 3.96, 14.8, worst 26, the 99th
@@ -287,16 +316,20 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     EXPECT_LT(smoothAll.p99, 0.10);
     EXPECT_LT(smoothContact.median, 0.025);
     EXPECT_LT(smoothContact.p90, 0.05);
-    EXPECT_LT(smoothContact.p99, 0.12);
-    EXPECT_LT(smoothContact.worst, 0.22);
-    EXPECT_LT(smoothAll.worst, 0.35);
+    EXPECT_LT(smoothContact.p99, 0.09);
+    EXPECT_LT(smoothContact.worst, 0.12);
+    EXPECT_LT(smoothAll.worst, 0.40);
+    // Not yet the target (none): 6 points, 5 of the floor and 1 of the short
+    // block's side facing the tall one (15 before the penumbrae were split,
+    // 14 of the floor).
+    EXPECT_LE(smoothTooBright, 8u);
     EXPECT_LT(flatAll.median, 0.02);
     EXPECT_LT(flatAll.p90, 0.065);
     EXPECT_LT(flatContact.median, 0.04);
     // Per face within 1 % (the target; the worst is a side of the short
-    // block, -0.79 %; -0.76 % with the lamp at 200, -0.77 % before the
-    // splits along the feet, -0.93 % with hemicubes along the patches'
-    // edges).
+    // block, -0.76 %; -0.79 % before the penumbrae were split, -0.76 % with
+    // the lamp at 200, -0.77 % before the splits along the feet, -0.93 %
+    // with hemicubes along the patches' edges).
     EXPECT_EQ(perFace.size(), faces.size() - 2) << "every face but the blocks' bottoms";
     EXPECT_LT(std::abs(worstFaceError), 0.01) << worstFace;
 }

@@ -40,9 +40,12 @@ TEST(AdaptiveSolver, TheReportGivesTheFinalElementCountAndTheRounds)
     EXPECT_TRUE(report["adaptive"]["enabled"].get<bool>());
     EXPECT_EQ(report["adaptive"]["rounds"].get<int>(), (*built)->stats().adaptiveRounds);
     EXPECT_GT(report["adaptive"]["rounds"].get<int>(), 0);
-    // The box stands on the floor: its foot's elements were split before the first shot.
+    // The box stands on the floor: its foot's elements, and those of its
+    // penumbra from the lamp, were split before the first shot.
     EXPECT_EQ(report["adaptive"]["contactElements"].get<int>(), (*built)->stats().contactElements);
     EXPECT_GT(report["adaptive"]["contactElements"].get<int>(), 0);
+    EXPECT_EQ(report["adaptive"]["penumbraElements"].get<int>(), (*built)->stats().penumbraElements);
+    EXPECT_GT(report["adaptive"]["penumbraElements"].get<int>(), 0);
 }
 
 TEST(BspFigures, EqualTheBspFiguresOfTheSolveReport)

@@ -53,4 +53,14 @@ inline model::Scene closedRoom()
     return scene;
 }
 
+// The closed room with adaptive subdivision on and 5 cm as the smallest
+// edge: what the refinement splits before the first shot.
+inline model::Scene closedRoomRefined()
+{
+    model::Scene scene = closedRoom();
+    scene.solver.adaptive.enabled = true;
+    scene.solver.adaptive.minEdge = 0.05;
+    return scene;
+}
+
 } // namespace regio::test

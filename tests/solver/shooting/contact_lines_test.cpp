@@ -133,16 +133,17 @@ TEST(ContactLines, ALegNarrowerThanAQuarterPatchMakesNone)
 
 TEST(ContactLines, TheRefinementSplitsThemBeforeTheFirstShotOnTopOfItsBudget)
 {
-    model::Scene scene = test::closedRoom();
-    scene.solver.adaptive.enabled = true;
-    scene.solver.adaptive.minEdge = 0.05;
+    const model::Scene scene = test::closedRoomRefined();
     PreparedScene s = test::prepared(scene);
     const int initial = int(s.elements.size());
-    AdaptiveRefinement r(s, scene.solver.adaptive);
+    RefinementPolicy policy;
+    policy.penumbraPasses = 0; // the block's penumbra: tests/solver/shooting/penumbrae_test.cpp
+    AdaptiveRefinement r(s, scene.solver.adaptive, policy);
     const int limit = r.elementLimit();
-    const int splits = r.splitContactLines();
+    const int splits = r.splitBeforeFirstShot();
     ASSERT_GT(splits, 0);
     EXPECT_EQ(r.contactElements(), 3 * splits);
+    EXPECT_EQ(r.penumbraElements(), 0);
     EXPECT_EQ(r.elementLimit(), limit + 3 * splits);
     EXPECT_EQ(r.roundLimit(), initial + 3 * splits + (limit - initial) / RefinementPolicy{}.maxRounds);
     const ActiveScene active = r.takeActiveScene();
@@ -162,7 +163,7 @@ TEST(ContactLines, TheRefinementSplitsThemBeforeTheFirstShotOnTopOfItsBudget)
         EXPECT_EQ(active.unshot[e], emission);
     }
     // Once only: the mesh is the refinement's from now on.
-    EXPECT_EQ(r.splitContactLines(), 0);
+    EXPECT_EQ(r.splitBeforeFirstShot(), 0);
 }
 
 TEST(ContactLines, TheRefinementSplitsNothingWhereNoSolidStandsOnAFace)
@@ -173,6 +174,6 @@ TEST(ContactLines, TheRefinementSplitsNothingWhereNoSolidStandsOnAFace)
                         scene.objects.end());
     PreparedScene s = test::prepared(scene);
     AdaptiveRefinement r(s, scene.solver.adaptive);
-    EXPECT_EQ(r.splitContactLines(), 0);
+    EXPECT_EQ(r.splitBeforeFirstShot(), 0);
     EXPECT_EQ(r.contactElements(), 0);
 }
