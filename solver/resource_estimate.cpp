@@ -1,6 +1,7 @@
 #include "solver/resource_estimate.h"
 
 #include "model/geometry/geometry.h"
+#include "solver/shooting/adaptive_refinement.h"
 #include "solver/shooting/shooting.h"
 #include "solver/visibility/hemicube_renderer.h"
 
@@ -20,12 +21,19 @@ namespace {
 // Strip triangulation (§5.4) cuts a face into triangles about patchSize on a
 // side: two per patchSize square, plus the strips' ragged ends.
 constexpr double kPatchesPerSquare = 2.0;
-// AdaptiveRefinementOptions::growthLimit: the mesh grows at most this much.
-// The splits along contact lines before the first shot come on top: a tenth
-// of the initial mesh on the samples (2-3 % of the final one), a third on a
-// hall with a hundred solids on its floor (8 % of the final one). Left out
-// of an estimate that is no closer than that anyway.
-constexpr double kGrowthLimit = 4.0;
+// What adaptive subdivision may grow the mesh to, as a multiple of the
+// initial mesh (RefinementPolicy): the growth budget, and on top of it the
+// splits in the solids' penumbrae before the first shot, at most a share of
+// that budget. The splits along contact lines before the first shot come on
+// top as well, without a limit of their own: a tenth of the initial mesh on
+// the samples (2-3 % of the final one), a third on a hall with a hundred
+// solids on its floor (8 % of the final one). Left out of an estimate that
+// is no closer than that anyway.
+double adaptiveGrowth()
+{
+    const RefinementPolicy policy;
+    return policy.growthLimit + policy.penumbraShare * (policy.growthLimit - 1.0);
+}
 
 std::string gigabytes(double bytes)
 {
@@ -63,7 +71,7 @@ ResourceEstimate estimateResources(const model::Scene& scene, const model::Solve
                 e.patches += std::max(1.0, std::ceil(kPatchesPerSquare * area / patchArea));
             }
     e.elements = e.patches * std::max(1, settings.elementsPerPatch);
-    e.maxElements = settings.adaptive.enabled ? e.elements * kGrowthLimit : e.elements;
+    e.maxElements = settings.adaptive.enabled ? e.elements * adaptiveGrowth() : e.elements;
     e.meshBytes = e.maxElements * kBytesPerElement;
     // Every painter keeps an item buffer of the whole hemicube (a top face
     // N x N and four sides N x N/2), ids and, for the z-buffer, depths; the

@@ -6,7 +6,9 @@
 // The element count comes from the faces' areas: meshing (§5.4, §5.5) lays
 // strips `patchSize` wide over every face, at least one patch a face, and
 // splits each patch into `elementsPerPatch` elements; adaptive subdivision
-// (§5.7) grows the mesh at most `growthLimit` times (adaptive_refinement.h).
+// (§5.7) grows the mesh at most `growthLimit` times, and the splits in the
+// solids' penumbrae before the first shot by a share of that growth at most
+// (RefinementPolicy, adaptive_refinement.h).
 // The bytes per element are measured (docs/reliability.md), the hemicube's
 // item buffers are exact, the kept form-factor rows are the cache's budget.
 #include "model/result.h"

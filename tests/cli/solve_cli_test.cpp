@@ -226,11 +226,11 @@ TEST(SolveCommand, ASceneTooBigForTheMachineIsRefusedBeforeItIsPreparedAndExitsO
 {
     Scratch scratch;
     json scene = json::parse(readText(samplePath("cornell-box")));
-    scene["solver"]["patchSize"] = 0.0005; // half a millimetre: half a billion elements
+    scene["solver"]["patchSize"] = 0.0005; // half a millimetre: two thirds of a billion elements
     const fs::path file = scratch.write("too-fine.json", scene.dump());
     const CommandRun run = solve({"--report", (scratch / "r.json").string(), file.string()});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_NE(run.err.find("/solver/patchSize: error: the mesh would have about 569 million elements, beyond the "
+    EXPECT_NE(run.err.find("/solver/patchSize: error: the mesh would have about 676 million elements, beyond the "
                            "limit of 20 million: raise the patch size"),
               std::string::npos)
         << run.err;
@@ -246,14 +246,14 @@ TEST(SolveCommand, ASceneNeedingMoreMemoryThanTheProcessMayTakeIsRefusedWithBoth
 #endif
     Scratch scratch;
     json scene = json::parse(readText(samplePath("cornell-box")));
-    scene["solver"]["patchSize"] = 0.004; // 9 million elements once refined: some 18 GB
+    scene["solver"]["patchSize"] = 0.004; // 10.6 million elements once refined: some 22 GB
     const fs::path file = scratch.write("fine.json", scene.dump());
     // 2 GB of address space for the process, as `ulimit -v` or a batch
     // system's memory limit would allow it.
     const CommandRun run = runRegioSolve({"solve", "--quiet", file.string()}, {}, "/dev/null", "ulimit -v 2000000");
     EXPECT_EQ(run.exitCode, 1) << run.err;
     EXPECT_NE(run.err.find("/solver/patchSize: error: the solve would need about "), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find(" GB of memory (8.89 million elements), more than the 2.0 GB available"), std::string::npos)
+    EXPECT_NE(run.err.find(" GB of memory (10.6 million elements), more than the 2.0 GB available"), std::string::npos)
         << run.err;
 }
 
