@@ -106,8 +106,10 @@ std::vector<Penumbra> penumbrae(const PreparedScene& scene, const PenumbraLimits
                 Penumbra penumbra;
                 penumbra.face = int(f);
                 penumbra.weight = directLight(scene, light, centre, plane.normal);
+                if (penumbra.weight <= 0.0)
+                    continue;
                 penumbra.shadows = shadowsFrom(polygon, plane, footprint, vertices);
-                if (penumbra.weight <= 0.0 || penumbra.shadows.empty())
+                if (penumbra.shadows.empty())
                     continue;
                 brightest = std::max(brightest, penumbra.weight);
                 found.push_back(std::move(penumbra));
@@ -115,12 +117,9 @@ std::vector<Penumbra> penumbrae(const PreparedScene& scene, const PenumbraLimits
             for (Penumbra& penumbra : found) {
                 if (penumbra.weight < limits.dimmestShare * brightest)
                     continue;
-                penumbra.lower = penumbra.upper = penumbra.shadows[0][0];
                 for (const std::vector<Vec3>& shadow : penumbra.shadows)
-                    for (const Vec3& p : shadow) {
-                        penumbra.lower = glm::min(penumbra.lower, p);
-                        penumbra.upper = glm::max(penumbra.upper, p);
-                    }
+                    for (const Vec3& p : shadow)
+                        penumbra.bounds.extend(p);
                 result.push_back(std::move(penumbra));
             }
         }
@@ -144,13 +143,11 @@ std::vector<int> elementsInPenumbra(const AdaptiveMesh& mesh, const Penumbra& pe
                                 scene.vertices[size_t(element.vertices[1])],
                                 scene.vertices[size_t(element.vertices[2])], element.centroid};
         // Wholly beside the shadows' bounds: in full light.
-        Vec3 lower = points[0], upper = points[0];
-        for (const Vec3& p : points) {
-            lower = glm::min(lower, p);
-            upper = glm::max(upper, p);
-        }
-        if (glm::any(glm::lessThan(upper, penumbra.lower - margin)) ||
-            glm::any(glm::greaterThan(lower, penumbra.upper + margin)))
+        model::Box3 box;
+        for (const Vec3& p : points)
+            box.extend(p);
+        if (glm::any(glm::lessThan(box.max, penumbra.bounds.min - margin)) ||
+            glm::any(glm::greaterThan(box.min, penumbra.bounds.max + margin)))
             continue;
         bool inSome = false, outOfSome = false;
         for (const std::vector<Vec3>& shadow : penumbra.shadows)

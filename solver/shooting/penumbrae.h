@@ -27,6 +27,7 @@
 // solid only the lights that send it at least `PenumbraLimits::dimmestShare`
 // of what its brightest light sends: a dim light's bend is a small share of
 // the light there.
+#include "model/geometry/geometry.h"
 #include "solver/prepare/prepared_scene.h"
 #include "solver/shooting/adaptive_subdivision.h"
 
@@ -48,7 +49,7 @@ struct Penumbra {
     int face = -1;
     double weight = 0.0; // the direct light its light sends to the footprint's centre (to rank them)
     std::vector<std::vector<Vec3>> shadows;
-    Vec3 lower{0.0}, upper{0.0}; // the bounds of the shadows
+    model::Box3 bounds; // of the shadows
 };
 
 // Every solid's penumbrae on the faces it stands on, brightest first.

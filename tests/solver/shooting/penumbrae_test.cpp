@@ -77,10 +77,10 @@ TEST(Penumbrae, ABlockUnderASquareLampCastsOneShadowFromEachLampCorner)
         for (const Vec3& p : shadow)
             EXPECT_NEAR(p.y, 0.0, 1e-12);
     }
-    EXPECT_NEAR(penumbra.lower.x, kOuterLo, 1e-9);
-    EXPECT_NEAR(penumbra.lower.z, kOuterLo, 1e-9);
-    EXPECT_NEAR(penumbra.upper.x, kOuterHi, 1e-9);
-    EXPECT_NEAR(penumbra.upper.z, kOuterHi, 1e-9);
+    EXPECT_NEAR(penumbra.bounds.min.x, kOuterLo, 1e-9);
+    EXPECT_NEAR(penumbra.bounds.min.z, kOuterLo, 1e-9);
+    EXPECT_NEAR(penumbra.bounds.max.x, kOuterHi, 1e-9);
+    EXPECT_NEAR(penumbra.bounds.max.z, kOuterHi, 1e-9);
     // Direct light at the footprint's centre, 2.4 m below the lamp's centre.
     EXPECT_NEAR(penumbra.weight, 5.0 * 1.0 / (std::numbers::pi * 2.4 * 2.4), 1e-9);
 }
@@ -111,7 +111,7 @@ TEST(Penumbrae, OnlyTheLightsThatSendTheSolidAQuarterOfWhatTheBrightestSendsCoun
     const std::vector<Penumbra> both = penumbrae(test::prepared(bright));
     ASSERT_EQ(both.size(), 2u);
     EXPECT_GT(both[0].weight, both[1].weight) << "brightest first";
-    EXPECT_NEAR(both[0].upper.z, kOuterHi, 1e-9) << "the lamp above the block";
+    EXPECT_NEAR(both[0].bounds.max.z, kOuterHi, 1e-9) << "the lamp above the block";
 }
 
 TEST(Penumbrae, TheElementsOfTheBandAndNoOthers)
