@@ -110,18 +110,40 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     const bool light = m_lightRenderer && emits(shooter);
     HemicubeRenderer& renderer = light ? *m_lightRenderer : m_renderer;
     ItemBuffer& buffer = light ? *m_lightBuffer : m_buffer;
-    if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
-        return nullptr;
-    ++m_renderedShots;
+    const Hemicube& hemicube = light ? m_lightHemicube : m_hemicube;
     const size_t elements = m_scene.elements.size();
     m_perItem.assign(elements + kFirstElementItem, 0.0);
-    buffer.accumulate(light ? m_lightHemicube : m_hemicube, m_perItem);
+    // A patch in a narrow gap sees the scene from several points
+    // (gap_shooters.h): each point's factors are kept apart, the row's
+    // receivers and near terms come from their mean.
+    const std::vector<Vec3> points = shooterPoints(m_scene, shooter);
+    if (points.size() == 1) {
+        if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
+            return nullptr;
+        buffer.accumulate(hemicube, m_perItem);
+    } else {
+        const Vec3& normal = m_scene.properties[static_cast<size_t>(m_scene.patches[p].properties)].plane.normal;
+        m_perPointItems.resize(points.size());
+        for (size_t q = 0; q < points.size(); ++q) {
+            if (!renderer.render(shooterFrameAt(points[q], normal), buffer, cancel))
+                return nullptr;
+            m_perPointItems[q].assign(elements + kFirstElementItem, 0.0);
+            buffer.accumulate(hemicube, m_perPointItems[q]);
+        }
+        const double share = 1.0 / static_cast<double>(points.size());
+        for (const std::vector<double>& items : m_perPointItems)
+            for (size_t i = 0; i < m_perItem.size(); ++i)
+                m_perItem[i] += items[i] * share;
+    }
+    ++m_renderedShots;
 
     FormFactorRow& row = m_scratch;
     row.elements.clear();
     row.factors.clear();
     row.near.clear();
     row.farScale.clear();
+    row.points = static_cast<int>(points.size());
+    row.pointFactors.clear();
     for (size_t j = 0; j < elements; ++j)
         if (const double f = m_perItem[j + kFirstElementItem]; f != 0.0) {
             row.elements.push_back(static_cast<std::uint32_t>(j));
@@ -130,10 +152,14 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     correctNearField(
         m_scene, shooter, row.elements, row.factors, row.near, row.farScale,
         [this](size_t count, const std::function<void(size_t, size_t)>& body) { m_renderer.parallelFor(count, body); });
+    if (points.size() > 1)
+        splitFarShareByPoints(m_scene, shooter, points, m_perPointItems, row.elements, row.near, row.pointFactors,
+                              row.farScale);
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
-    const std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) +
-                              row.near.size() * sizeof(NearTerm) + row.farScale.size() * sizeof(double);
+    std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) +
+                        row.near.size() * sizeof(NearTerm) + row.farScale.size() * sizeof(double);
+    exact += row.pointFactors.size() * sizeof(double);
     if (m_cacheBudget == 0 || m_cacheBytes + exact > m_cacheBudget)
         return &row;
     FormFactorRow& kept = m_rows[p];
@@ -141,6 +167,8 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     kept.factors.assign(row.factors.begin(), row.factors.end());
     kept.near.assign(row.near.begin(), row.near.end());
     kept.farScale.assign(row.farScale.begin(), row.farScale.end());
+    kept.points = row.points;
+    kept.pointFactors.assign(row.pointFactors.begin(), row.pointFactors.end());
     kept.escaped = row.escaped;
     kept.blocked = row.blocked;
     m_cacheBytes += kept.bytes();
@@ -183,12 +211,15 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // What the far receivers' factors apply to: the shooter's power, or with
     // near receivers each shooter element's power times its far share
     // (near_field.h).
-    Rgb farPower = power;
-    if (!row->farScale.empty()) {
-        farPower = Rgb{0.0};
-        for (size_t s = 0; s < row->farScale.size(); ++s)
-            farPower += m_elementPower[s] * row->farScale[s];
-    }
+    // A patch shot from several points sends through each point's factors
+    // what its elements give that point (gap_shooters.h).
+    const size_t points = static_cast<size_t>(row->points);
+    m_pointPower.assign(points, Rgb{0.0});
+    if (row->farScale.empty())
+        m_pointPower[0] = power;
+    for (size_t s = 0; s < m_elementPower.size() && !row->farScale.empty(); ++s)
+        for (size_t q = 0; q < points; ++q)
+            m_pointPower[q] += m_elementPower[s] * row->farScale[s * points + q];
     Rgb received{0.0};
     // W arriving on element j: reflected into its radiosity and unshot
     // radiosity, the rest absorbed.
@@ -203,8 +234,18 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
         m_absorbed += incident - reflected;
         received += incident;
     };
-    for (size_t k = 0; k < row->elements.size(); ++k)
-        receive(row->elements[k], farPower * row->factors[k]); // from the whole shooter
+    if (points == 1)
+        for (size_t k = 0; k < row->elements.size(); ++k)
+            receive(row->elements[k], m_pointPower[0] * row->factors[k]); // from the whole shooter
+    else
+        for (size_t k = 0; k < row->elements.size(); ++k) {
+            const double* f = row->pointFactors.data() + k * points;
+            Rgb incident{0.0};
+            for (size_t q = 0; q < points; ++q)
+                incident += m_pointPower[q] * f[q];
+            if (incident != Rgb{0.0}) // a near receiver's far factors are 0
+                receive(row->elements[k], incident);
+        }
     // Near receivers: from each of the shooter's elements; a receiver's
     // terms are consecutive.
     for (size_t t = 0; t < row->near.size();) {
@@ -229,12 +270,16 @@ std::vector<double> Shooting::lastFormFactors() const
     // Near receivers and the far share: the shooter's elements' values,
     // weighted by their share of its area.
     const Patch& patch = m_scene.patches[static_cast<size_t>(m_lastShooter)];
-    double farScale = m_lastRow->farScale.empty() ? 1.0 : 0.0;
-    for (size_t s = 0; s < m_lastRow->farScale.size(); ++s)
-        farScale +=
-            m_lastRow->farScale[s] * m_scene.elements[static_cast<size_t>(patch.firstElement) + s].area / patch.area;
+    const size_t points = static_cast<size_t>(m_lastRow->points);
+    std::vector<double> farScale(points, m_lastRow->farScale.empty() ? 1.0 : 0.0);
+    for (size_t s = 0; s < m_lastRow->farScale.size() / points; ++s)
+        for (size_t q = 0; q < points; ++q)
+            farScale[q] += m_lastRow->farScale[s * points + q] *
+                           m_scene.elements[static_cast<size_t>(patch.firstElement) + s].area / patch.area;
     for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
-        f[m_lastRow->elements[k]] = m_lastRow->factors[k] * farScale;
+        for (size_t q = 0; q < points; ++q)
+            f[m_lastRow->elements[k]] +=
+                (points == 1 ? m_lastRow->factors[k] : m_lastRow->pointFactors[k * points + q]) * farScale[q];
     for (const NearTerm& t : m_lastRow->near)
         f[m_lastRow->elements[t.entry]] +=
             t.factor * m_scene.elements[static_cast<size_t>(patch.firstElement + t.shooterElement)].area / patch.area;

@@ -37,7 +37,9 @@
 // sees and F_ij of each), are kept within a memory budget and a later shot of
 // the same patch reuses them instead of rendering the hemicube again: the
 // same numbers, so the same result to the last bit. The rows are dropped when
-// the mesh changes (adaptive subdivision).
+// the mesh changes (adaptive subdivision). A patch in a narrow gap (a
+// ceiling over a lamp hung just under it) renders from several points and
+// keeps each point's factors (gap_shooters.h).
 //
 // The lights' shots render a hemicube twice as fine as the others (at most
 // kLightHemicubeMaxResolution, never coarser than the scene's). They draw
@@ -54,6 +56,7 @@
 // scene's resolution.
 #include "solver/prepare/prepared_scene.h"
 #include "solver/shooting/energy_balance.h"
+#include "solver/shooting/gap_shooters.h"
 #include "solver/shooting/near_field.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_renderer.h"
@@ -165,12 +168,20 @@ private:
         std::vector<double> factors;
         std::vector<NearTerm> near;   // receivers close to the shooter (near_field.h)
         std::vector<double> farScale; // per shooter element (near_field.h); empty = 1
+        // A patch shot from several points (gap_shooters.h): per receiver
+        // what each point saw of it, pointFactors[k * points + p] (the far
+        // receivers; `factors` then holds the mean, which no shot uses), and
+        // farScale[s * points + p] what element s's power carries through
+        // point p.
+        int points = 1;
+        std::vector<double> pointFactors;
         double escaped = 0.0;
         double blocked = 0.0;
         std::size_t bytes() const
         {
-            return elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double) +
-                   near.capacity() * sizeof(NearTerm) + farScale.capacity() * sizeof(double);
+            std::size_t b = elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double) +
+                            near.capacity() * sizeof(NearTerm) + farScale.capacity() * sizeof(double);
+            return b + pointFactors.capacity() * sizeof(double);
         }
     };
     // The row of `shooter`: kept, or rendered now (and kept if it fits).
@@ -199,9 +210,11 @@ private:
     std::vector<Rgb> m_radiosity; // per element, W/m^2
     std::vector<Rgb> m_unshot;    // per element, W/m^2
     double m_overrelaxation = 1.0;
-    std::vector<Rgb> m_elementPower; // the shooter's elements' share of a shot
-    std::vector<Rgb> m_patchPower;   // per patch, W
-    std::vector<double> m_perItem;   // delta form factor sums per item id
+    std::vector<Rgb> m_elementPower;                  // the shooter's elements' share of a shot
+    std::vector<Rgb> m_patchPower;                    // per patch, W
+    std::vector<double> m_perItem;                    // delta form factor sums per item id
+    std::vector<std::vector<double>> m_perPointItems; // the same per point of a patch shot from several
+    std::vector<Rgb> m_pointPower;                    // what each point of such a patch sends
 
     Rgb m_emitted{0.0};
     Rgb m_absorbed{0.0};

@@ -25,7 +25,11 @@ constexpr Vec3 kTurnsPerMetre{75.48776662466927, 56.98402909980532, 43.015970900
 ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
-    const Vec3& n = scene.properties[static_cast<size_t>(p.properties)].plane.normal;
+    return shooterFrameAt(p.centroid, scene.properties[static_cast<size_t>(p.properties)].plane.normal);
+}
+
+ShooterFrame shooterFrameAt(const Vec3& point, const Vec3& n)
+{
     // A hemicube whose pixel rows run along the patch's edges sees the edges
     // of a room that is built along the same axes (walls, shelves, a grid of
     // lamp patches) line up with its rows, every shooter alike: a face seen
@@ -36,9 +40,9 @@ ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch)
     // (§5.6, aliasing; docs/accuracy.md, "Turned hemicubes"). The angle
     // depends on the patch's centroid only, not on its numbering or its
     // first corner, so a scene read back from a model file shoots alike.
-    const ShooterFrame base = ShooterFrame::make(p.centroid, n);
-    const double turn = 2.0 * std::numbers::pi * glm::dot(kTurnsPerMetre, p.centroid);
-    return ShooterFrame::make(p.centroid, n, std::cos(turn) * base.u + std::sin(turn) * base.v);
+    const ShooterFrame base = ShooterFrame::make(point, n);
+    const double turn = 2.0 * std::numbers::pi * glm::dot(kTurnsPerMetre, point);
+    return ShooterFrame::make(point, n, std::cos(turn) * base.u + std::sin(turn) * base.v);
 }
 
 Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, model::Visibility mode)

@@ -82,6 +82,9 @@ inline constexpr HemicubeFaceSet faceBit(HemicubeFace f) { return 1u << static_c
 // centroid lies (visibility.cpp says why). Every shot, view and order of a
 // patch uses this one frame.
 ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch);
+// The same frame at any point of a plane with unit normal `n` (a patch shot
+// from several points: solver/shooting/gap_shooters.h).
+ShooterFrame shooterFrameAt(const Vec3& point, const Vec3& n);
 
 struct VisibilityStats {
     std::int64_t regionsCulled = 0; // whole regions skipped (behind the shooter plane)
