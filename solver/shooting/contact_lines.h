@@ -12,8 +12,8 @@
 //
 // So these elements are split before the first shot, as a discontinuity
 // mesh would place its first lines (Heckbert 1992): the elements of a face
-// with an edge on the outline of the face that lies on the solid's side, and
-// those of the side with an edge on the face. Only solids at least
+// with a corner on the solid's side, and those of the side with a corner on
+// the face. Only solids at least
 // ShadowLineLimits::solidMinWidth patches wide count, as for the shadow
 // lines of their feet: a table leg or a shelf board would only add slivers.
 // The walls of a room meeting its floor are no contact line (the room is not
@@ -30,11 +30,10 @@ namespace regio::solver {
 // solids cover whole (it has no mesh). Ascending.
 std::vector<std::vector<int>> contactFaces(const PreparedScene& scene);
 
-// The active elements of `mesh` with an edge that no element continues (on
-// the outline of its face's mesh) and that lies on a contact face's polygon
-// (both ends in its plane, the middle inside it, within
-// model::kDistanceEpsilon). `contacts` is contactFaces() of the scene the
-// mesh grew from. Ascending.
+// The active elements of `mesh` with a corner on a contact face's polygon
+// (in its plane and inside it, within model::kDistanceEpsilon): on the line
+// where the two meet. `contacts` is contactFaces() of the scene the mesh
+// grew from. Ascending.
 std::vector<int> elementsOnContactLines(const AdaptiveMesh& mesh, const std::vector<std::vector<int>>& contacts);
 
 } // namespace regio::solver

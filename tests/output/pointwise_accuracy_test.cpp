@@ -225,6 +225,13 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     for (const auto& [face, count] : smoothBright)
         std::printf(" %s %zu", face.c_str(), count);
     std::printf(" ), flat %zu\n", total(tooBright(flatSamples)));
+    {
+        std::vector<Sample> bright;
+        for (const Sample& s : smoothSamples)
+            if (touching.count(s.where->face) && s.shown > 1.05 * s.reference)
+                bright.push_back(s);
+        printWorst("smooth, of faces touching a solid, more than 5 % too bright", bright, bright.size());
+    }
     printWorst("smooth", smoothSamples, 8);
     printWorst("flat", flatSamples, 5);
     // Per face: the mean over a 1 cm grid (uniform, so the area-weighted
@@ -274,13 +281,16 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     // mean-preserving pass over the vertex values (smooth), facing faces
     // with the contour formula three patches out, hemicubes turned about
     // the normal by where the patch lies, the elements along the blocks'
-    // feet split twice before the first shot, the lamp's shots at a
-    // hemicube of 400, the elements in the blocks' penumbrae split twice
-    // before the first shot, against the reference at 2 cm patches: median
-    // 0.40 %, 90th percentile 1.59 %, 99th 4.15 %, worst 33 %; beside
-    // contact lines median 0.92 %, 90th 2.61 %, 99th 6.7 %, worst 8.6 %.
-    // Flat: median 1.47 %, 90th 4.84 %; beside contact lines median 1.9 %.
-    // (Without the penumbrae's splits: 0.40, 1.68, 4.7, worst 27; beside
+    // feet (every element with a corner on them) split twice before the
+    // first shot, the lamp's shots at a hemicube of 400, the elements in
+    // the blocks' penumbrae split twice before the first shot, against the
+    // reference at 2 cm patches: median 0.40 %, 90th percentile 1.58 %, 99th
+    // 4.23 %, worst 33 %; beside contact lines median 0.83 %, 90th 2.58 %,
+    // 99th 5.6 %, worst 9.2 %. Flat: median 1.46 %, 90th 4.75 %; beside
+    // contact lines median 1.9 %. (Only the elements with an edge on the
+    // feet split: 0.40, 1.59, 4.15, worst 33; beside contact lines 0.92,
+    // 2.61, 6.7, worst 8.6; flat 1.47, 4.84, 1.9. Without the penumbrae's
+    // splits: 0.40, 1.68, 4.7, worst 27; beside
     // contact lines 1.01, 2.87, 8.6, worst 17; flat 1.46, 4.83, 1.9.
     // The lamp at 200 as the rest: 0.47, 1.92, 5.2, worst 29; beside
     // contact lines 1.15, 3.01, 8.7, worst 19; flat 1.80, 5.45, 2.2.
@@ -316,13 +326,14 @@ TEST(PointwiseAccuracy, CornellBoxLitMeshAgainstTheReference)
     EXPECT_LT(smoothAll.p99, 0.10);
     EXPECT_LT(smoothContact.median, 0.025);
     EXPECT_LT(smoothContact.p90, 0.05);
-    EXPECT_LT(smoothContact.p99, 0.09);
+    EXPECT_LT(smoothContact.p99, 0.08);
     EXPECT_LT(smoothContact.worst, 0.12);
     EXPECT_LT(smoothAll.worst, 0.40);
-    // Not yet the target (none): 6 points, 5 of the floor and 1 of the short
-    // block's side facing the tall one (15 before the penumbrae were split,
-    // 14 of the floor).
-    EXPECT_LE(smoothTooBright, 8u);
+    // Not yet the target (none): 5 points, 4 of the floor and 1 of the short
+    // block's side facing the tall one, 1.5 cm inside its edge (6 before the
+    // elements with only a corner on a contact line were split too, 15
+    // before the penumbrae were split, 14 of those of the floor).
+    EXPECT_LE(smoothTooBright, 7u);
     EXPECT_LT(flatAll.median, 0.02);
     EXPECT_LT(flatAll.p90, 0.065);
     EXPECT_LT(flatContact.median, 0.04);

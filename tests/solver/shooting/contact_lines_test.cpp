@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -32,30 +33,35 @@ AdaptiveMesh meshOf(PreparedScene& scene)
     return AdaptiveMesh(scene, zero, zero);
 }
 
-// The elements with an edge along the foot of the block [lo, hi]^2 standing
-// at height y: both ends at that height on one side of the foot's square.
-// Computed from the coordinates alone, apart from the mesh's topology.
-std::set<int> elementsAlongFoot(const PreparedScene& s, double y, double lo, double hi)
+// The elements with a corner on the foot of the block [lo, hi]^2 standing at
+// height y, each with how many of its corners lie there (at that height on
+// one side of the foot's square). Computed from the coordinates alone, apart
+// from the mesh's topology.
+std::map<int, int> cornersOnFoot(const PreparedScene& s, double y, double lo, double hi)
 {
     const double eps = 1e-9;
     const auto within = [&](double c) { return c >= lo - eps && c <= hi + eps; };
     // On the side x = side (axis 0) or z = side (axis 2), within the square.
-    const auto onSide = [&](const Vec3& p, int axis, double side) {
-        return std::abs(p.y - y) < eps && std::abs(p[axis] - side) < eps && within(p.x) && within(p.z);
+    const auto onFoot = [&](const Vec3& p) {
+        if (std::abs(p.y - y) >= eps || !within(p.x) || !within(p.z))
+            return false;
+        return std::abs(p.x - lo) < eps || std::abs(p.x - hi) < eps || std::abs(p.z - lo) < eps ||
+               std::abs(p.z - hi) < eps;
     };
-    std::set<int> out;
+    std::map<int, int> out;
     for (const InputFace& face : s.faces)
-        for (int e : face.elements) {
-            const auto& v = s.elements[size_t(e)].vertices;
-            for (int k = 0; k < 3; ++k) {
-                const Vec3& a = s.vertices[size_t(v[size_t(k)])];
-                const Vec3& b = s.vertices[size_t(v[size_t((k + 1) % 3)])];
-                for (int axis : {0, 2})
-                    for (double side : {lo, hi})
-                        if (onSide(a, axis, side) && onSide(b, axis, side))
-                            out.insert(e);
-            }
-        }
+        for (int e : face.elements)
+            for (int corner : s.elements[size_t(e)].vertices)
+                if (onFoot(s.vertices[size_t(corner)]))
+                    ++out[e];
+    return out;
+}
+
+std::set<int> elementsAlongFoot(const PreparedScene& s, double y, double lo, double hi)
+{
+    std::set<int> out;
+    for (const auto& [e, corners] : cornersOnFoot(s, y, lo, hi))
+        out.insert(e);
     return out;
 }
 
@@ -97,6 +103,13 @@ TEST(ContactLines, TheElementsOfTheFloorAndOfTheBlocksSidesAlongItsFootAreFoundA
     EXPECT_EQ(std::set<int>(found.begin(), found.end()), expected);
     EXPECT_EQ(facesOf(s, found), (std::set<std::string>{"room.body.ny", "block.body.nx", "block.body.px",
                                                         "block.body.nz", "block.body.pz"}));
+    // Those that only touch the foot at a corner are found too: of a quad's
+    // two triangles along the foot one has an edge on it, the other a corner,
+    // and left whole it would carry its far corners' light to the foot.
+    const auto onlyACorner =
+        std::count_if(found.begin(), found.end(),
+                      [&, corners = cornersOnFoot(s, 0.0, 1.0, 2.0)](int e) { return corners.at(e) == 1; });
+    EXPECT_GT(onlyACorner, 0);
 }
 
 TEST(ContactLines, ABoxStandingOnABoxMeetsItsTopAlongItsFoot)
