@@ -10,7 +10,7 @@
 // producers fill it:
 //   - litMeshFromSolution(): flat, every element's three corners duplicated
 //     with the element's radiosity (the element mesh as it is, no averaging);
-//   - the vertex radiosity of paper §6 (area-weighted averages at shared
+//   - the vertex radiosity of paper §6 (angle-weighted averages at shared
 //     vertices within one plane), which yields the same type.
 #include "model/result.h"
 #include "solver/prepare/prepared_scene.h"

@@ -277,14 +277,28 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         triangleElement.resize(triangles.size(), k);
     }
 
-    // Area-weighted average of the elements touching each vertex (§6).
+    // The average of the elements touching each vertex (§6), each weighted
+    // by its angle at the vertex (pi where the vertex lies on its edge), so
+    // that every direction around the vertex counts alike. Weighted by area
+    // instead, where a refined part of the mesh meets a coarse one the
+    // large elements outweighed the small ones beside the vertex, and their
+    // means come from farther away: on the Cornell box's short block a
+    // vertex 1.4 cm above the floor, where the elements along the foot meet
+    // larger ones, read 13 % too bright (docs/accuracy.md).
     const auto base = static_cast<uint32_t>(m_geometry.positions.size());
     std::vector<std::vector<std::pair<uint32_t, double>>> terms(positions.size());
     for (size_t k = 0; k < elements.size(); ++k) {
         const auto e = static_cast<uint32_t>(elements[k]);
-        const double area = scene.elements[e].area;
-        for (int v : outlines[k])
-            terms[static_cast<size_t>(v)].emplace_back(e, area);
+        const bool flat = scene.elements[e].area <= 0.0; // weighs nothing, as before
+        const std::vector<int>& outline = outlines[k];
+        const size_t n = outline.size();
+        for (size_t i = 0; i < n; ++i) {
+            const Vec3& p = positions[static_cast<size_t>(outline[i])];
+            const Vec3 a = positions[static_cast<size_t>(outline[(i + n - 1) % n])] - p;
+            const Vec3 b = positions[static_cast<size_t>(outline[(i + 1) % n])] - p;
+            const double angle = flat ? 0.0 : std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+            terms[static_cast<size_t>(outline[i])].emplace_back(e, angle);
+        }
     }
 
     // Boundary vertices (on an edge used by one triangle) and neighbours.
@@ -321,7 +335,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
             if (!singular[original])
                 continue;
             const auto e = static_cast<uint32_t>(elements[triangleElement[t]]);
-            const std::vector<std::pair<uint32_t, double>> own{{e, scene.elements[e].area}};
+            const std::vector<std::pair<uint32_t, double>> own{{e, 1.0}};
             if (!claimed[original]) {
                 claimed[original] = 1;
                 terms[original] = own;
@@ -340,10 +354,10 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
     // The terms in the order shade() sums them, the same for every radiosity.
     for (size_t v = 0; v < positions.size(); ++v) {
         double weight = 0.0;
-        for (const auto& [e, area] : terms[v]) {
+        for (const auto& [e, w] : terms[v]) {
             m_termElement.push_back(e);
-            m_termArea.push_back(area);
-            weight += area;
+            m_termWeight.push_back(w);
+            weight += w;
         }
         m_weight.push_back(weight);
         m_termEnd.push_back(static_cast<uint32_t>(m_termElement.size()));
@@ -515,9 +529,9 @@ void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm
         if (m_weight[v] > 0.0) {
             Rgb sum(0.0);
             for (uint32_t t = begin; t < end; ++t)
-                sum += elementRadiosity[m_termElement[t]] * m_termArea[t];
+                sum += elementRadiosity[m_termElement[t]] * m_termWeight[t];
             value[v] = sum / m_weight[v];
-        } else if (end > begin) { // only zero-area elements touch it
+        } else if (end > begin) { // only elements of no area touch it
             Rgb sum(0.0);
             for (uint32_t t = begin; t < end; ++t)
                 sum += elementRadiosity[m_termElement[t]];

@@ -7,8 +7,10 @@
 //     and carry the same material (reflectance and emission). Across a crease
 //     (another plane) or a material boundary nothing is averaged: the vertex
 //     exists once per group, each copy with its own value.
-//   - A vertex's radiosity is the area-weighted average of the elements of
-//     its group around it, including elements on whose edge it lies.
+//   - A vertex's radiosity is the average of the elements of its group
+//     around it, including elements on whose edge it lies, each weighted by
+//     its angle at the vertex (pi on its edge): every direction counts
+//     alike, however large the elements on each side.
 //   - Fragments of a split face (§5.3) and patches of different sizes meet
 //     with T-vertices. Each element is re-triangulated with the vertices that
 //     lie on its edges, so the output has none: every interior edge of a group
@@ -102,11 +104,11 @@ private:
     size_t m_elements = 0;
     LitMesh m_geometry; // everything but the radiosity
     // Per vertex: its terms end at m_termEnd[v] (they begin where the
-    // previous vertex's end), each an element and its area; m_weight[v] is
-    // the sum of the areas, summed in the same order.
+    // previous vertex's end), each an element and its weight (its angle at
+    // the vertex); m_weight[v] is the sum of the weights, in the same order.
     std::vector<uint32_t> m_termEnd;
     std::vector<uint32_t> m_termElement;
-    std::vector<double> m_termArea;
+    std::vector<double> m_termWeight;
     std::vector<double> m_weight;
     // Only when the options look at neighbours: per vertex, boundary or not
     // and its neighbours (ending at m_neighbourEnd[v]).

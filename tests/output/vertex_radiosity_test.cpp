@@ -170,9 +170,41 @@ TEST(VertexRadiosity, LinearRampIsReproducedAtInteriorVertices)
     }
     EXPECT_GT(interior, 20);
     // Elements are about 0.05 m and the ramp rises about 2.3 per metre, so
-    // an element's own value misses a corner's by up to ~0.07; the area-
-    // weighted average around the vertex (measured 0.012) is far closer.
+    // an element's own value misses a corner's by up to ~0.07; the average
+    // around the vertex is far closer.
     EXPECT_LT(worst, 0.02);
+}
+
+// Where small elements meet large ones, a vertex on the line between them
+// takes from both sides alike: its value is the average of the elements
+// around it weighted by their angles there, not by their areas (which let
+// the large elements, whose means come from farther away, outweigh the small
+// ones beside the vertex).
+TEST(VertexRadiosity, AVertexWhereSmallElementsMeetLargeOnesTakesFromBothSidesAlike)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "coarse", 0, 1, 0, 1, "grey"); // elements 0.125 m square
+    addFloor(scene, "fine", 1, 1.1, 0, 1, "grey"); // elements 0.05 x 0.125 m
+    const PreparedScene prepared = prepare(scene, 0.3);
+    const int fine = faceIndex(prepared, "fine.face");
+    ASSERT_GE(fine, 0);
+    const std::vector<Rgb> values = elementValues(prepared, [&](const Element& e) {
+        return prepared.properties[size_t(e.properties)].face == fine ? Rgb(0.0) : Rgb(1.0);
+    });
+    SmoothingOptions averageOnly;
+    averageOnly.extrapolateBoundary = false;
+    averageOnly.meanPreservingPasses = 0;
+    const LitMesh mesh = smoothLitMesh(prepared, values, averageOnly);
+    int onTheLine = 0;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        const glm::dvec3 p = mesh.positions[v];
+        if (std::abs(p.x - 1.0) > 1e-6 || p.y < 1e-6 || p.y > 1 - 1e-6)
+            continue;
+        ++onTheLine;
+        EXPECT_NEAR(mesh.radiosity[v].x, 0.5, 1e-6) << "at y = " << p.y;
+    }
+    EXPECT_EQ(onTheLine, 7);
 }
 
 TEST(VertexRadiosity, ExtrapolationBringsBoundaryValuesCloserToTheRamp)
