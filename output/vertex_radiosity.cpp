@@ -366,7 +366,18 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
     // What the options need of the neighbourhood, in output vertex numbers.
     if (options.extrapolateBoundary || options.neighbourPasses > 0) {
         for (size_t v = 0; v < positions.size(); ++v) {
-            m_boundary.push_back(boundary[v]);
+            // A boundary vertex beside a shadow corner is not extrapolated:
+            // shadow lines radiate from the corner, so its inner neighbours
+            // lie across them, and their difference is the jump from
+            // light to umbra, not a gradient towards the edge (the floor
+            // 3 mm from the Cornell box's tall block's corner, in its
+            // shadow, was carried to a third of its value).
+            Outline kind = boundary[v] ? Outline::Extrapolated : Outline::Inner;
+            if (kind == Outline::Extrapolated && !singular[v] &&
+                std::any_of(neighbours[v].begin(), neighbours[v].end(),
+                            [&](int w) { return singular[static_cast<size_t>(w)] != 0; }))
+                kind = Outline::Averaged;
+            m_boundary.push_back(kind);
             for (int w : neighbours[v])
                 m_neighbour.push_back(base + static_cast<uint32_t>(w));
             m_neighbourEnd.push_back(static_cast<uint32_t>(m_neighbour.size()));
@@ -510,7 +521,7 @@ void SmoothShading::closeCracksBetweenGroups()
         m_weight.push_back(0.0);
         m_termEnd.push_back(m_termEnd.empty() ? 0u : m_termEnd.back());
         if (neighbourhood) {
-            m_boundary.push_back(0);
+            m_boundary.push_back(Outline::Inner);
             m_neighbourEnd.push_back(m_neighbourEnd.empty() ? 0u : m_neighbourEnd.back());
         }
     }
@@ -546,12 +557,12 @@ void SmoothShading::shade(std::span<const Rgb> elementRadiosity, std::vector<glm
     if (m_options.extrapolateBoundary) {
         const std::vector<Rgb> average = value;
         for (size_t v = 0; v < vertices; ++v) {
-            if (!m_boundary[v])
+            if (m_boundary[v] != Outline::Extrapolated)
                 continue;
             Rgb inner(0.0);
             int n = 0;
             for (uint32_t w : neighboursOf(v)) {
-                if (!m_boundary[w]) {
+                if (m_boundary[w] == Outline::Inner) {
                     inner += average[w];
                     ++n;
                 }

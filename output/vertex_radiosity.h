@@ -46,7 +46,9 @@ struct SmoothingOptions {
     // extrapolation takes the 90th percentile error from 3.5 % to 3.1 % and
     // beside contact lines from 12 % to 5.9 %. Off: the plain average, a
     // convex combination of the element values, which never leaves their
-    // range but is visibly too bright in every concave corner.
+    // range but is visibly too bright in every concave corner. A boundary
+    // vertex next to a shadow corner keeps its average: the shadow lines
+    // from the corner lie between it and its inner neighbours.
     bool extrapolateBoundary = true;
     // Passes of the mean-preserving correction, after the extrapolation:
     // each vertex moves by what the triangles around it miss of their
@@ -110,9 +112,14 @@ private:
     std::vector<uint32_t> m_termElement;
     std::vector<double> m_termWeight;
     std::vector<double> m_weight;
-    // Only when the options look at neighbours: per vertex, boundary or not
+    // Only when the options look at neighbours: per vertex, where it lies
     // and its neighbours (ending at m_neighbourEnd[v]).
-    std::vector<char> m_boundary;
+    enum class Outline : uint8_t {
+        Inner,        // not on the group's outline
+        Extrapolated, // on it: extrapolated from the inner neighbours
+        Averaged,     // on it beside a shadow corner: the average stays
+    };
+    std::vector<Outline> m_boundary;
     std::vector<uint32_t> m_neighbourEnd;
     std::vector<uint32_t> m_neighbour;
     // Vertices placed on a group's outline where another group has one: the

@@ -351,6 +351,43 @@ TEST(VertexRadiosity, AtAShadowCornerEveryElementKeepsItsOwnValue)
     EXPECT_EQ(plain.indices.size(), mesh.indices.size());
 }
 
+// A shadow corner on a face's outline (a block's foot corner on the floor's
+// edge): the shadow lines from it run between the outline's vertices beside
+// it and their inner neighbours, so those vertices are not extrapolated from
+// across the jump from umbra to light; they keep their average.
+TEST(VertexRadiosity, BesideAShadowCornerOnTheOutlineTheAverageIsNotExtrapolated)
+{
+    model::Scene scene;
+    addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    addFloor(scene, "floor", 0, 1, 0, 1, "grey");
+    PreparedScene prepared = prepare(scene, 0.25); // vertices every 0.125 m
+    // Umbra left of x = 0.5, light right of it.
+    const std::vector<Rgb> values =
+        elementValues(prepared, [](const Element& e) { return Rgb(e.centroid.x < 0.5 ? 0.1 : 1.0); });
+    SmoothingOptions noMeans;
+    noMeans.meanPreservingPasses = 0;
+    const auto valueAt = [](const LitMesh& mesh, const Vec3& p) {
+        for (size_t v = 0; v < mesh.vertexCount(); ++v)
+            if (glm::length(glm::dvec3(mesh.positions[v]) - p) < 1e-6)
+                return double(mesh.radiosity[v].x);
+        return -1.0;
+    };
+    const Vec3 umbraSide{0.375, 0.0, 0.0}, lightSide{0.625, 0.0, 0.0};
+    // Without the corner the edge's vertices are extrapolated, and the one
+    // on the umbra's side takes the light beyond the jump for a gradient.
+    const LitMesh plain = smoothLitMesh(prepared, values, noMeans);
+    ASSERT_GE(valueAt(plain, umbraSide), 0.0);
+    EXPECT_LT(valueAt(plain, umbraSide), 0.09);
+
+    prepared.shadowCorners.push_back({0.5, 0.0, 0.0});
+    const LitMesh mesh = smoothLitMesh(prepared, values, noMeans);
+    EXPECT_NEAR(valueAt(mesh, umbraSide), 0.1, 1e-6);
+    EXPECT_NEAR(valueAt(mesh, lightSide), 1.0, 1e-6);
+    // One element farther along the edge, extrapolation as before.
+    const Vec3 farther{0.25, 0.0, 0.0};
+    EXPECT_NEAR(valueAt(mesh, farther), valueAt(plain, farther), 1e-6);
+}
+
 // A floor of two faces (split at x = 0.3) meets a wall of one along y = 0:
 // each side divides the line at its own points. In the output, both meet
 // vertex to vertex there, so no pixel falls between them.
