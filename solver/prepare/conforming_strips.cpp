@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace regio::solver {
@@ -134,9 +135,12 @@ double worstAngle(const std::vector<Vec3>& points, const Triangle& t)
 // quadrilateral is swapped for the other diagonal when that raises the
 // smaller of their smallest angles. The fans that close T-vertices leave
 // thin triangles where the points of two pieces nearly meet; the flips
-// widen them. The outline (the face's and the covers') is never crossed.
+// widen them. The outline (the face's and the covers') is never crossed,
+// and neither is a line between two pieces (`fixed`, undirected edges):
+// some are shadow lines (solver/prepare/shadow_lines.h), which the mesh
+// must keep as edges.
 void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& triangles, const Vec3& normal,
-                    const std::vector<char>& touchedPoint)
+                    const std::vector<char>& touchedPoint, const std::unordered_set<std::uint64_t>& fixed)
 {
     const auto ccw = [&](int a, int b, int c) {
         return glm::dot(glm::cross(points[size_t(b)] - points[size_t(a)], points[size_t(c)] - points[size_t(a)]),
@@ -165,7 +169,7 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
                 const Triangle tri = triangles[size_t(t)];
                 const int a = tri[size_t(i)], b = tri[size_t((i + 1) % 3)], c = tri[size_t((i + 2) % 3)];
                 const auto other = owner.find(key(b, a));
-                if (other == owner.end())
+                if (other == owner.end() || fixed.count(key(std::min(a, b), std::max(a, b))) != 0)
                     continue;
                 const int o = other->second;
                 const Triangle& u = triangles[size_t(o)];
@@ -284,6 +288,37 @@ void collapseShortEdges(const std::vector<Vec3>& points, std::vector<PointRole>&
     triangles.resize(kept);
 }
 
+// The edges of `mesh` along the pieces' edges (undirected, lower index
+// first, packed as improveByFlips keys them): between consecutive points of
+// the mesh on each piece edge, once the T-vertices are closed and the short
+// edges collapsed (points no triangle uses any more are skipped).
+std::unordered_set<std::uint64_t> linesBetweenPieces(const std::vector<std::vector<Vec3>>& pieces,
+                                                     const OutlinePoints& outline, const StripMesh& mesh)
+{
+    std::vector<char> used(mesh.points.size(), 0);
+    for (const Triangle& t : mesh.triangles)
+        for (int v : t)
+            used[size_t(v)] = 1;
+    std::unordered_set<std::uint64_t> fixed;
+    for (const std::vector<Vec3>& piece : pieces)
+        for (size_t i = 0; i < piece.size(); ++i) {
+            const int a = outline.find(piece[i]), b = outline.find(piece[(i + 1) % piece.size()]);
+            if (a < 0 || b < 0)
+                continue;
+            int previous = a;
+            std::vector<int> along = outline.inside(a, b);
+            along.push_back(b);
+            for (int v : along) {
+                if (!used[size_t(v)])
+                    continue;
+                fixed.insert((std::uint64_t(std::uint32_t(std::min(previous, v))) << 32) |
+                             std::uint32_t(std::max(previous, v)));
+                previous = v;
+            }
+        }
+    return fixed;
+}
+
 } // namespace
 
 StripMesh stripTriangulatePieces(const std::vector<std::vector<Vec3>>& pieces, const Vec3& normal, double patchSize)
@@ -366,7 +401,7 @@ StripMesh stripTriangulatePieces(const std::vector<std::vector<Vec3>>& pieces, c
     for (int v : fanned)
         touched[size_t(v)] = 1;
     collapseShortEdges(out.points, roles, out.triangles, normal, patchSize, touched);
-    improveByFlips(out.points, out.triangles, normal, touched);
+    improveByFlips(out.points, out.triangles, normal, touched, linesBetweenPieces(pieces, outline, out));
 
     // Drop the points that collapsed away.
     std::vector<int> renumber(out.points.size(), -1);

@@ -11,7 +11,9 @@
 // patch edge on a piece's outline takes the corners of the neighbouring
 // pieces that lie on it: a triangle with such points on one edge is fanned
 // from its opposite corner, one with points on several edges from its
-// centroid.
+// centroid. Every line between two pieces stays a line of patch edges: some
+// are the shadow lines the pieces were cut along
+// (solver/prepare/shadow_lines.h), where the radiosity bends.
 #include "solver/prepare/strip_triangulation.h"
 
 #include <vector>

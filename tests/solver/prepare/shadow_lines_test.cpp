@@ -7,6 +7,7 @@
 #include "support/adaptive_scenes.h"
 #include "support/covered_faces.h"
 #include "support/prepared_scenes.h"
+#include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,29 @@ model::Scene boxUnderTwoLamps()
     test::addMaterial(scene, "dim", Rgb{0.0}, Rgb{1.0});
     test::addPolygon(scene, "dim-lamp", {{0.6, 1.5, -0.2}, {1.0, 1.5, -0.2}, {1.0, 1.5, 0.2}, {0.6, 1.5, 0.2}}, "dim");
     return scene;
+}
+
+// Every patch of face `f` lies within one of its uncovered pieces (corners
+// inside or on its outline): none crosses a line between two pieces.
+void expectPatchesWithinPieces(const PreparedScene& s, size_t f)
+{
+    const std::vector<std::vector<Vec3>> pieces = uncoveredPieces(s)[f];
+    const Vec3& normal = s.properties[f].plane.normal;
+    const auto within = [&](const std::vector<Vec3>& piece, const Vec3& p) {
+        for (size_t i = 0; i < piece.size(); ++i)
+            if (glm::dot(glm::cross(normal, piece[(i + 1) % piece.size()] - piece[i]), p - piece[i]) < -1e-9)
+                return false;
+        return true;
+    };
+    for (int p = s.faces[f].firstPatch; p < s.faces[f].firstPatch + s.faces[f].patchCount; ++p) {
+        const Patch& patch = s.patches[size_t(p)];
+        const bool inOne = std::any_of(pieces.begin(), pieces.end(), [&](const std::vector<Vec3>& piece) {
+            return std::all_of(patch.vertices.begin(), patch.vertices.end(),
+                               [&](int v) { return within(piece, s.vertices[size_t(v)]); });
+        });
+        EXPECT_TRUE(inOne) << s.faces[f].id << ": the patch at (" << patch.centroid.x << ", " << patch.centroid.z
+                           << ") crosses a line between pieces";
+    }
 }
 
 } // namespace
@@ -188,4 +212,16 @@ TEST(ShadowLines, PreparationCutsTheFloorAlongThemAndListsTheCorners)
             EXPECT_EQ(one.size(), 1u) << "a piece the line at (" << line.origin.x << ", " << line.origin.z
                                       << ") still crosses";
         }
+}
+
+TEST(ShadowLines, ThePatchesOfTheFloorKeepTheLinesAsEdges)
+{
+    // Where the pieces' strips meet, fans close the T-vertices and flips
+    // widen thin triangles; no flip may swap a line between two pieces for
+    // the other diagonal (it did at the Cornell box's tall block, where the
+    // umbra's line from its front corner was flipped away).
+    const PreparedScene box = test::prepared(test::boxUnderLamp());
+    expectPatchesWithinPieces(box, test::faceNamed(box, "floor.face"));
+    const PreparedScene cornell = test::prepared(test::loadSample("cornell-box"));
+    expectPatchesWithinPieces(cornell, test::faceNamed(cornell, "floor.top"));
 }
