@@ -126,6 +126,9 @@ struct PointRole {
     Vec3 a{0.0}, b{0.0}; // the edge's line when onEdge
 };
 
+// A directed edge a -> b as one key; undirected, the lower index first.
+std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+
 double worstAngle(const std::vector<Vec3>& points, const Triangle& t)
 {
     return minimumAngleDegrees(points[size_t(t[0])], points[size_t(t[1])], points[size_t(t[2])]);
@@ -146,12 +149,11 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
         return glm::dot(glm::cross(points[size_t(b)] - points[size_t(a)], points[size_t(c)] - points[size_t(a)]),
                         normal) > 0.0;
     };
-    const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
     std::unordered_map<std::uint64_t, int> owner; // directed edge -> its triangle
     owner.reserve(triangles.size() * 3);
     const auto own = [&](int t) {
         for (int i = 0; i < 3; ++i)
-            owner[key(triangles[size_t(t)][size_t(i)], triangles[size_t(t)][size_t((i + 1) % 3)])] = t;
+            owner[edgeKey(triangles[size_t(t)][size_t(i)], triangles[size_t(t)][size_t((i + 1) % 3)])] = t;
     };
     // Only around the points the fans and collapses touched: elsewhere the
     // strips are as the strip method made them.
@@ -168,8 +170,8 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
             for (int i = 0; i < 3; ++i) {
                 const Triangle tri = triangles[size_t(t)];
                 const int a = tri[size_t(i)], b = tri[size_t((i + 1) % 3)], c = tri[size_t((i + 2) % 3)];
-                const auto other = owner.find(key(b, a));
-                if (other == owner.end() || fixed.count(key(std::min(a, b), std::max(a, b))) != 0)
+                const auto other = owner.find(edgeKey(b, a));
+                if (other == owner.end() || fixed.count(edgeKey(std::min(a, b), std::max(a, b))) != 0)
                     continue;
                 const int o = other->second;
                 const Triangle& u = triangles[size_t(o)];
@@ -185,8 +187,8 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
                 const double after = std::min(worstAngle(points, first), worstAngle(points, second));
                 if (after <= before + 1e-9)
                     continue;
-                owner.erase(key(a, b));
-                owner.erase(key(b, a));
+                owner.erase(edgeKey(a, b));
+                owner.erase(edgeKey(b, a));
                 triangles[size_t(t)] = first;
                 triangles[size_t(o)] = second;
                 own(t);
@@ -288,10 +290,10 @@ void collapseShortEdges(const std::vector<Vec3>& points, std::vector<PointRole>&
     triangles.resize(kept);
 }
 
-// The edges of `mesh` along the pieces' edges (undirected, lower index
-// first, packed as improveByFlips keys them): between consecutive points of
-// the mesh on each piece edge, once the T-vertices are closed and the short
-// edges collapsed (points no triangle uses any more are skipped).
+// The edges of `mesh` along the pieces' edges (undirected edgeKeys):
+// between consecutive points of the mesh on each piece edge, once the
+// T-vertices are closed and the short edges collapsed (points no triangle
+// uses any more are skipped).
 std::unordered_set<std::uint64_t> linesBetweenPieces(const std::vector<std::vector<Vec3>>& pieces,
                                                      const OutlinePoints& outline, const StripMesh& mesh)
 {
@@ -311,8 +313,7 @@ std::unordered_set<std::uint64_t> linesBetweenPieces(const std::vector<std::vect
             for (int v : along) {
                 if (!used[size_t(v)])
                     continue;
-                fixed.insert((std::uint64_t(std::uint32_t(std::min(previous, v))) << 32) |
-                             std::uint32_t(std::max(previous, v)));
+                fixed.insert(edgeKey(std::min(previous, v), std::max(previous, v)));
                 previous = v;
             }
         }

@@ -3,6 +3,7 @@
 #include "solver/prepare/shadow_lines.h"
 
 #include "solver/prepare/covered_parts.h"
+#include "solver/prepare/face_polygon.h"
 
 #include "support/adaptive_scenes.h"
 #include "support/covered_faces.h"
@@ -61,17 +62,11 @@ void expectPatchesWithinPieces(const PreparedScene& s, size_t f)
 {
     const std::vector<std::vector<Vec3>> pieces = uncoveredPieces(s)[f];
     const Vec3& normal = s.properties[f].plane.normal;
-    const auto within = [&](const std::vector<Vec3>& piece, const Vec3& p) {
-        for (size_t i = 0; i < piece.size(); ++i)
-            if (glm::dot(glm::cross(normal, piece[(i + 1) % piece.size()] - piece[i]), p - piece[i]) < -1e-9)
-                return false;
-        return true;
-    };
     for (int p = s.faces[f].firstPatch; p < s.faces[f].firstPatch + s.faces[f].patchCount; ++p) {
         const Patch& patch = s.patches[size_t(p)];
         const bool inOne = std::any_of(pieces.begin(), pieces.end(), [&](const std::vector<Vec3>& piece) {
             return std::all_of(patch.vertices.begin(), patch.vertices.end(),
-                               [&](int v) { return within(piece, s.vertices[size_t(v)]); });
+                               [&](int v) { return insideConvex(piece, normal, s.vertices[size_t(v)]); });
         });
         EXPECT_TRUE(inOne) << s.faces[f].id << ": the patch at (" << patch.centroid.x << ", " << patch.centroid.z
                            << ") crosses a line between pieces";
