@@ -1,5 +1,7 @@
 #include "output/vertex_radiosity.h"
 
+#include "model/geometry/edge_key.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -13,7 +15,9 @@
 
 namespace regio::output {
 
+using model::edgeKey;
 using model::Plane;
+using model::undirectedEdgeKey;
 using solver::Element;
 using solver::InputFace;
 using solver::Properties;
@@ -118,11 +122,6 @@ private:
     double m_cell;
     std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> m_cells;
 };
-
-uint64_t edgeKey(int a, int b)
-{
-    return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
-}
 
 // The points of `grid` (ids into `positions`) that lie on the inside of the
 // segment a-b, within `tolerance` of it and farther than that from its ends,
@@ -306,7 +305,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
     for (const auto& t : triangles)
         for (size_t c = 0; c < 3; ++c) {
             const int a = t[c], b = t[(c + 1) % 3];
-            ++undirected[edgeKey(std::min(a, b), std::max(a, b))];
+            ++undirected[undirectedEdgeKey(a, b)];
         }
     std::vector<char> boundary(positions.size(), 0);
     std::vector<std::vector<int>> neighbours(positions.size());
@@ -401,7 +400,7 @@ void SmoothShading::planGroup(const PreparedScene& scene, const Vec3& planeNorma
         // welded corners: copies at shadow corners are no outline).
         for (size_t c = 0; c < 3; ++c) {
             const int a = welded[t][c], b = welded[t][(c + 1) % 3];
-            if (undirected[edgeKey(std::min(a, b), std::max(a, b))] == 1)
+            if (undirected[undirectedEdgeKey(a, b)] == 1)
                 m_openEdges.push_back(static_cast<uint32_t>(m_geometry.indices.size() + c));
         }
         for (int v : triangles[t])

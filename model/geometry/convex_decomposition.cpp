@@ -1,5 +1,7 @@
 #include "model/geometry/convex_decomposition.h"
 
+#include "model/geometry/edge_key.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -215,8 +217,6 @@ Result<std::vector<Polygon2Loop>> earClip(const std::vector<V2>& p, Polygon2Loop
     triangles.push_back(v);
     return triangles;
 }
-
-std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
 
 bool isConvexLoop(const std::vector<V2>& p, const Polygon2Loop& loop, double eps)
 {

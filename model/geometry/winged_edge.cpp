@@ -1,18 +1,13 @@
 #include "model/geometry/winged_edge.h"
 
+#include "model/geometry/edge_key.h"
+
 #include <algorithm>
 #include <unordered_set>
 
 namespace regio::model {
 
 namespace {
-
-std::uint64_t edgeKey(int a, int b)
-{
-    auto lo = std::uint32_t(std::min(a, b));
-    auto hi = std::uint32_t(std::max(a, b));
-    return (std::uint64_t(lo) << 32) | hi;
-}
 
 bool touches(const WingedEdgeMesh::Edge& edge, int v) { return edge.v0 == v || edge.v1 == v; }
 
@@ -99,7 +94,7 @@ void WingedEdgeMesh::buildEdges(std::span<const std::vector<int>> loops)
         for (size_t i = 0; i < n; ++i) {
             int a = loop[i];
             int b = loop[(i + 1) % n];
-            auto [it, fresh] = m_edgeIndex.try_emplace(edgeKey(a, b), int(m_edges.size()));
+            auto [it, fresh] = m_edgeIndex.try_emplace(undirectedEdgeKey(a, b), int(m_edges.size()));
             if (fresh) {
                 Edge edge;
                 edge.v0 = a;
@@ -397,7 +392,7 @@ int WingedEdgeMesh::findEdge(int a, int b) const
 {
     if (a < 0 || b < 0 || a >= m_vertexCount || b >= m_vertexCount)
         return -1;
-    auto it = m_edgeIndex.find(edgeKey(a, b));
+    auto it = m_edgeIndex.find(undirectedEdgeKey(a, b));
     return it == m_edgeIndex.end() ? -1 : it->second;
 }
 

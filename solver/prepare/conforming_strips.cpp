@@ -1,5 +1,6 @@
 #include "solver/prepare/conforming_strips.h"
 
+#include "model/geometry/edge_key.h"
 #include "model/geometry/geometry.h"
 
 #include <glm/geometric.hpp>
@@ -15,6 +16,8 @@ namespace regio::solver {
 
 namespace {
 
+using model::edgeKey;
+using model::undirectedEdgeKey;
 using model::Vec3;
 
 // Corners closer than this are one point; a point closer than this to a
@@ -126,9 +129,6 @@ struct PointRole {
     Vec3 a{0.0}, b{0.0}; // the edge's line when onEdge
 };
 
-// A directed edge a -> b as one key; undirected, the lower index first.
-std::uint64_t edgeKey(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
-
 double worstAngle(const std::vector<Vec3>& points, const Triangle& t)
 {
     return minimumAngleDegrees(points[size_t(t[0])], points[size_t(t[1])], points[size_t(t[2])]);
@@ -171,7 +171,7 @@ void improveByFlips(const std::vector<Vec3>& points, std::vector<Triangle>& tria
                 const Triangle tri = triangles[size_t(t)];
                 const int a = tri[size_t(i)], b = tri[size_t((i + 1) % 3)], c = tri[size_t((i + 2) % 3)];
                 const auto other = owner.find(edgeKey(b, a));
-                if (other == owner.end() || fixed.count(edgeKey(std::min(a, b), std::max(a, b))) != 0)
+                if (other == owner.end() || fixed.count(undirectedEdgeKey(a, b)) != 0)
                     continue;
                 const int o = other->second;
                 const Triangle& u = triangles[size_t(o)];
@@ -290,7 +290,7 @@ void collapseShortEdges(const std::vector<Vec3>& points, std::vector<PointRole>&
     triangles.resize(kept);
 }
 
-// The edges of `mesh` along the pieces' edges (undirected edgeKeys):
+// The edges of `mesh` along the pieces' edges (undirectedEdgeKeys):
 // between consecutive points of the mesh on each piece edge, once the
 // T-vertices are closed and the short edges collapsed (points no triangle
 // uses any more are skipped).
@@ -313,7 +313,7 @@ std::unordered_set<std::uint64_t> linesBetweenPieces(const std::vector<std::vect
             for (int v : along) {
                 if (!used[size_t(v)])
                     continue;
-                fixed.insert(edgeKey(std::min(previous, v), std::max(previous, v)));
+                fixed.insert(undirectedEdgeKey(previous, v));
                 previous = v;
             }
         }
