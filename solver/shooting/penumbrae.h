@@ -3,7 +3,11 @@
 // between the shadow that every point of the light makes (the umbra) and the
 // shadow that any point makes. For a convex solid and a convex light the
 // shadows from the light's vertices bound both: the umbra is their
-// intersection, the penumbra's outer edge the outline of their union. Across
+// intersection, the penumbra's outer edge their convex hull (beside an
+// upright edge of the solid the band reaches into a wedge between two
+// vertices' shadows that neither covers; elementsInPenumbra, below, takes
+// only what reaches into a vertex's shadow and so leaves the wedge out,
+// which changes nothing measurable: docs/accuracy.md). Across
 // the band the direct light rises from nothing to full within centimetres
 // and bends at both edges; a straight line between two vertices an element
 // apart cuts across the bend and carries light into the umbra, or shade into
