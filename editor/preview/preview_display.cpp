@@ -1,5 +1,7 @@
 #include "editor/preview/preview_display.h"
 
+#include "model/geometry/edge_key.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -66,16 +68,13 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
         mesh.order = 1;
         const solver::SolutionMesh& m = *frame.snapshot.mesh;
         const MeshOverlayColours edgeColours = meshOverlayColours(display);
-        auto edgeKey = [](int a, int b) {
-            return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
-        };
         auto vertex = [&m](int v) { return m.vertices[static_cast<size_t>(v)]; };
         std::unordered_set<uint64_t> seen;
         seen.reserve(m.triangles.size() * 2 + m.anchoredTriangles.size());
         for (const auto& t : m.triangles) {
             for (size_t k = 0; k < 3; ++k) {
                 const int a = t[k], b = t[(k + 1) % 3];
-                if (seen.insert(edgeKey(a, b)).second) {
+                if (seen.insert(model::undirectedEdgeKey(a, b)).second) {
                     mesh.lines.add(vertex(a), vertex(b), edgeColours.element);
                     ++out.elementEdges;
                 }
@@ -87,7 +86,7 @@ PreviewLayers buildPreviewLayers(const PreviewFrame& frame, const PreviewDisplay
         for (const auto& t : m.anchoredTriangles) {
             for (size_t k = 0; k < 3; ++k) {
                 const int a = t[k], b = t[(k + 1) % 3];
-                if (seen.insert(edgeKey(a, b)).second) {
+                if (seen.insert(model::undirectedEdgeKey(a, b)).second) {
                     mesh.lines.add(vertex(a), vertex(b), edgeColours.anchoring);
                     ++out.anchoringEdges;
                 }

@@ -1,5 +1,6 @@
 #include "solver/prepare/meshing.h"
 
+#include "model/geometry/edge_key.h"
 #include "model/geometry/geometry.h"
 #include "solver/prepare/conforming_strips.h"
 #include "solver/prepare/covered_parts.h"
@@ -33,8 +34,7 @@ public:
     int at(int p, int q, int t)
     {
         const int lo = std::min(p, q), hi = std::max(p, q);
-        const std::uint64_t key = (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
-        auto [it, inserted] = m_edges.try_emplace(key, int(m_vertices.size()));
+        auto [it, inserted] = m_edges.try_emplace(model::undirectedEdgeKey(p, q), int(m_vertices.size()));
         if (inserted) {
             // Computed once from the lower index, so both users see the same points.
             const Vec3 a = m_vertices[size_t(lo)], b = m_vertices[size_t(hi)];

@@ -1,5 +1,6 @@
 #include "solver/prepare/pieces.h"
 
+#include "model/geometry/edge_key.h"
 #include "solver/prepare/face_polygon.h"
 #include "solver/prepare/partition.h"
 #include "solver/prepare/regional_tree.h"
@@ -397,18 +398,17 @@ void PieceBuilder::findOutlineVertices()
     m_outlineFace.assign(m_scene.vertices.size(), -1);
     // Directed edges, sorted: an edge without its reverse is on the outline.
     std::vector<std::uint64_t> directed;
-    const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
     for (size_t f = 0; f < m_scene.faces.size(); ++f) {
         directed.clear();
         for (int e : m_scene.faces[f].elements) {
             const auto& v = m_scene.elements[size_t(e)].vertices;
             for (int i = 0; i < 3; ++i)
-                directed.push_back(key(v[size_t(i)], v[size_t((i + 1) % 3)]));
+                directed.push_back(model::edgeKey(v[size_t(i)], v[size_t((i + 1) % 3)]));
         }
         std::sort(directed.begin(), directed.end());
         for (std::uint64_t edge : directed) {
             const int a = int(edge >> 32), b = int(edge & 0xffffffffu);
-            if (std::binary_search(directed.begin(), directed.end(), key(b, a)))
+            if (std::binary_search(directed.begin(), directed.end(), model::edgeKey(b, a)))
                 continue;
             for (int v : {a, b})
                 if (m_outlineFace[size_t(v)] < 0) {

@@ -1,5 +1,6 @@
 #include "solver/shooting/adaptive_subdivision.h"
 
+#include "model/geometry/edge_key.h"
 #include "solver/prepare/pieces.h"
 #include "solver/shooting/shooting.h"
 
@@ -31,13 +32,6 @@ AdaptiveMesh::AdaptiveMesh(PreparedScene& scene, std::vector<Rgb> radiosity, std
     }
 }
 
-AdaptiveMesh::EdgeKey AdaptiveMesh::key(int a, int b)
-{
-    if (a > b)
-        std::swap(a, b);
-    return (EdgeKey(std::uint32_t(a)) << 32) | EdgeKey(std::uint32_t(b));
-}
-
 int AdaptiveMesh::faceOf(int element) const
 {
     return m_scene.properties[size_t(m_scene.elements[size_t(element)].properties)].face;
@@ -48,7 +42,7 @@ void AdaptiveMesh::addEdges(int element)
     FaceTopology& t = m_faces[size_t(faceOf(element))];
     const auto& v = m_scene.elements[size_t(element)].vertices;
     for (int k = 0; k < 3; ++k)
-        t.sides[key(v[size_t(k)], v[size_t((k + 1) % 3)])].push_back(element);
+        t.sides[model::undirectedEdgeKey(v[size_t(k)], v[size_t((k + 1) % 3)])].push_back(element);
 }
 
 void AdaptiveMesh::removeEdges(int element)
@@ -56,7 +50,7 @@ void AdaptiveMesh::removeEdges(int element)
     FaceTopology& t = m_faces[size_t(faceOf(element))];
     const auto& v = m_scene.elements[size_t(element)].vertices;
     for (int k = 0; k < 3; ++k) {
-        auto it = t.sides.find(key(v[size_t(k)], v[size_t((k + 1) % 3)]));
+        auto it = t.sides.find(model::undirectedEdgeKey(v[size_t(k)], v[size_t((k + 1) % 3)]));
         if (it == t.sides.end())
             throw std::logic_error("AdaptiveMesh::removeEdges: a side of the element is not in the mesh");
         std::erase(it->second, element);
@@ -68,7 +62,7 @@ void AdaptiveMesh::removeEdges(int element)
 int AdaptiveMesh::midpoint(int face, int a, int b)
 {
     FaceTopology& t = m_faces[size_t(face)];
-    const EdgeKey k = key(a, b);
+    const EdgeKey k = model::undirectedEdgeKey(a, b);
     if (auto it = t.midpoint.find(k); it != t.midpoint.end())
         return it->second;
     // Computed from the sorted pair, so it is the same point whoever asks.
@@ -76,14 +70,14 @@ int AdaptiveMesh::midpoint(int face, int a, int b)
     const int m = int(m_scene.vertices.size());
     m_scene.vertices.push_back(0.5 * (m_scene.vertices[size_t(lo)] + m_scene.vertices[size_t(hi)]));
     t.midpoint[k] = m;
-    t.halfOf[key(a, m)] = k;
-    t.halfOf[key(m, b)] = k;
+    t.halfOf[model::undirectedEdgeKey(a, m)] = k;
+    t.halfOf[model::undirectedEdgeKey(m, b)] = k;
     return m;
 }
 
 void AdaptiveMesh::collectFiner(const FaceTopology& t, int a, int b, int exclude, std::vector<int>& out) const
 {
-    if (auto it = t.sides.find(key(a, b)); it != t.sides.end()) {
+    if (auto it = t.sides.find(model::undirectedEdgeKey(a, b)); it != t.sides.end()) {
         bool found = false;
         for (int e : it->second)
             if (e != exclude) {
@@ -93,7 +87,7 @@ void AdaptiveMesh::collectFiner(const FaceTopology& t, int a, int b, int exclude
         if (found)
             return;
     }
-    if (auto it = t.midpoint.find(key(a, b)); it != t.midpoint.end()) {
+    if (auto it = t.midpoint.find(model::undirectedEdgeKey(a, b)); it != t.midpoint.end()) {
         collectFiner(t, a, it->second, exclude, out);
         collectFiner(t, it->second, b, exclude, out);
     }
@@ -110,7 +104,7 @@ std::vector<int> AdaptiveMesh::neighboursAcross(int element, int edge) const
         return out;
     // Coarser neighbour: the edge this one halves (and so on up), whose
     // remaining active owner is the element on the other side.
-    EdgeKey k = key(a, b);
+    EdgeKey k = model::undirectedEdgeKey(a, b);
     for (auto it = t.halfOf.find(k); it != t.halfOf.end(); it = t.halfOf.find(k)) {
         k = it->second;
         if (auto s = t.sides.find(k); s != t.sides.end()) {
@@ -210,7 +204,7 @@ std::vector<int> AdaptiveMesh::coarserPartners(int element) const
 
 void AdaptiveMesh::collectInside(const FaceTopology& t, int a, int b, std::vector<int>& out) const
 {
-    if (auto it = t.midpoint.find(key(a, b)); it != t.midpoint.end()) {
+    if (auto it = t.midpoint.find(model::undirectedEdgeKey(a, b)); it != t.midpoint.end()) {
         collectInside(t, a, it->second, out);
         out.push_back(it->second);
         collectInside(t, it->second, b, out);
@@ -478,7 +472,8 @@ int AdaptiveMesh::subdivide(std::span<const int> elements, double minEdge)
                 const auto& v = m_scene.elements[size_t(n)].vertices;
                 int withMidpoint = 0;
                 for (int k = 0; k < 3; ++k)
-                    withMidpoint += t.midpoint.count(key(v[size_t(k)], v[size_t((k + 1) % 3)])) ? 1 : 0;
+                    withMidpoint +=
+                        t.midpoint.count(model::undirectedEdgeKey(v[size_t(k)], v[size_t((k + 1) % 3)])) ? 1 : 0;
                 if (withMidpoint == 3) {
                     const std::vector<int> done = split(n, minEdge);
                     pending.insert(pending.end(), done.begin(), done.end());

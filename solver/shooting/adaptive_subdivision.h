@@ -174,7 +174,6 @@ private:
         std::unordered_map<EdgeKey, EdgeKey> halfOf;         // half edge -> the edge it halves
     };
 
-    static EdgeKey key(int a, int b);
     int faceOf(int element) const;
     void addEdges(int element);
     void removeEdges(int element);
