@@ -191,45 +191,68 @@ public:
             m_triangles[mesh.faceIds[static_cast<size_t>(mesh.triangleFace[t])]].push_back(t);
     }
 
-    // Empty when no triangle of the face holds the point (within 1e-6 of its
-    // edges, in barycentric terms).
-    std::optional<model::Rgb> displayRadiosityAt(const std::string& faceId, const model::Vec3& p,
-                                                 const glm::vec3& ambient) const
+    // The triangle of the face that holds the point (within 1e-6 of its
+    // edges, in barycentric terms), or empty. In a flat lit mesh
+    // (output::litMeshFromSolution) triangle t is element t.
+    std::optional<size_t> triangleAt(const std::string& faceId, const model::Vec3& p) const
     {
         const auto found = m_triangles.find(faceId);
         if (found == m_triangles.end())
             return std::nullopt;
         double best = -1e300;
-        model::Rgb value(0.0);
+        size_t holder = 0;
         for (size_t t : found->second) {
-            const uint32_t* corner = &m_mesh.indices[3 * t];
-            const model::Vec3 a(m_mesh.positions[corner[0]]);
-            const model::Vec3 b(m_mesh.positions[corner[1]]);
-            const model::Vec3 c(m_mesh.positions[corner[2]]);
-            // Barycentric coordinates of p projected onto the triangle's plane.
-            const model::Vec3 e0 = b - a, e1 = c - a, d = p - a;
-            const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
-            const double d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
-            const double denominator = d00 * d11 - d01 * d01;
-            if (denominator <= 0.0)
-                continue;
-            const double wb = (d11 * d20 - d01 * d21) / denominator;
-            const double wc = (d00 * d21 - d01 * d20) / denominator;
-            const double wa = 1.0 - wb - wc;
-            const double inside = std::min(wa, std::min(wb, wc));
-            if (inside <= best)
-                continue;
-            best = inside;
-            value = wa * model::Rgb(m_mesh.displayRadiosity(corner[0], ambient)) +
-                    wb * model::Rgb(m_mesh.displayRadiosity(corner[1], ambient)) +
-                    wc * model::Rgb(m_mesh.displayRadiosity(corner[2], ambient));
+            const std::array<double, 3> w = barycentric(t, p);
+            const double inside = std::min(w[0], std::min(w[1], w[2]));
+            if (inside > best) {
+                best = inside;
+                holder = t;
+            }
         }
         if (best < -1e-6)
             return std::nullopt;
-        return value;
+        return holder;
+    }
+
+    // The display radiosity of the triangle that holds the point,
+    // interpolated barycentrically; empty when no triangle of the face does.
+    std::optional<model::Rgb> displayRadiosityAt(const std::string& faceId, const model::Vec3& p,
+                                                 const glm::vec3& ambient) const
+    {
+        const std::optional<size_t> t = triangleAt(faceId, p);
+        if (!t)
+            return std::nullopt;
+        const uint32_t* corner = &m_mesh.indices[3 * *t];
+        const std::array<double, 3> w = barycentric(*t, p);
+        return w[0] * model::Rgb(m_mesh.displayRadiosity(corner[0], ambient)) +
+               w[1] * model::Rgb(m_mesh.displayRadiosity(corner[1], ambient)) +
+               w[2] * model::Rgb(m_mesh.displayRadiosity(corner[2], ambient));
+    }
+
+    std::array<model::Vec3, 3> corners(size_t t) const
+    {
+        const uint32_t* corner = &m_mesh.indices[3 * t];
+        return {model::Vec3(m_mesh.positions[corner[0]]), model::Vec3(m_mesh.positions[corner[1]]),
+                model::Vec3(m_mesh.positions[corner[2]])};
     }
 
 private:
+    // Barycentric coordinates of p projected onto triangle t's plane; all
+    // -1e300 for a degenerate triangle.
+    std::array<double, 3> barycentric(size_t t, const model::Vec3& p) const
+    {
+        const auto [a, b, c] = corners(t);
+        const model::Vec3 e0 = b - a, e1 = c - a, d = p - a;
+        const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+        const double d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
+        const double denominator = d00 * d11 - d01 * d01;
+        if (denominator <= 0.0)
+            return {-1e300, -1e300, -1e300};
+        const double wb = (d11 * d20 - d01 * d21) / denominator;
+        const double wc = (d00 * d21 - d01 * d20) / denominator;
+        return {1.0 - wb - wc, wb, wc};
+    }
+
     const output::LitMesh& m_mesh;
     std::map<std::string, std::vector<size_t>> m_triangles; // per face id
 };
