@@ -1,5 +1,7 @@
 #include "solver/shooting/near_field.h"
 
+#include "solver/shooting/edge_angle.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -49,7 +51,7 @@ double formFactorOf(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon)
         const double sine = glm::length(c);
         if (sine <= 0.0)
             continue;
-        sum += std::atan2(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
+        sum += edgeAngle(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
     }
     return std::abs(sum) / (2.0 * std::numbers::pi);
 }
@@ -86,6 +88,143 @@ double nearFactor(const Element& from, const Element& to, const Corner& corner, 
             mean += formFactorOf(x, point.normal, polygon) / 4.0;
     }
     return atReceiver ? mean * to.area / from.area : mean; // reciprocity
+}
+
+// The shooter's elements tile it and share corners and edges: from one point
+// of a receiver, the direction to a corner and the contour formula's term of
+// an edge serve every element that has them (nine elements of a patch have
+// 10 corners and 18 edges, not 27 and 27). Built once per row.
+struct ShooterMesh {
+    std::vector<int> corners;                                   // scene vertex indices
+    std::vector<std::array<int, 2>> edges;                      // local corner indices
+    std::vector<std::array<std::pair<int, bool>, 3>> ofElement; // edge, reversed; in the element's order
+
+    ShooterMesh(const PreparedScene& scene, const Patch& patch)
+    {
+        std::vector<std::array<int, 3>> local;
+        for (int s = 0; s < patch.elementCount; ++s) {
+            const Element& from = scene.elements[size_t(patch.firstElement + s)];
+            std::array<int, 3> l{};
+            for (size_t i = 0; i < 3; ++i) {
+                const auto found = std::find(corners.begin(), corners.end(), from.vertices[i]);
+                l[i] = int(found - corners.begin());
+                if (found == corners.end())
+                    corners.push_back(from.vertices[i]);
+            }
+            local.push_back(l);
+        }
+        for (const std::array<int, 3>& l : local) {
+            std::array<std::pair<int, bool>, 3> own{};
+            for (size_t i = 0; i < 3; ++i) {
+                const int a = l[i], b = l[(i + 1) % 3];
+                const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+                const auto found = std::find(edges.begin(), edges.end(), key);
+                own[i] = {int(found - edges.begin()), a > b};
+                if (found == edges.end())
+                    edges.push_back(key);
+            }
+            ofElement.push_back(own);
+        }
+    }
+};
+
+// Scratch for nearFactors, one per thread.
+struct SharedScratch {
+    std::vector<Vec3> unit;
+    std::vector<char> inFront;
+    std::vector<double> term;
+    std::vector<char> termDone;
+    std::array<std::vector<double>, 4> at; // the shared factors at each of a receiver's points
+};
+
+// formFactorOf(x, n, element s) for every element s of the shooter whose
+// corners all lie in front of x's plane (the same numbers, bit for bit: the
+// same directions, and an edge's term for the other orientation is exactly
+// its negation); NaN for the others, which formFactorOf takes whole.
+void sharedFormFactors(const PreparedScene& scene, const ShooterMesh& mesh, const Vec3& x, const Vec3& n,
+                       SharedScratch& scratch, std::vector<double>& out)
+{
+    constexpr double kAbove = 1e-9; // as formFactorOf
+    const size_t corners = mesh.corners.size();
+    scratch.unit.resize(corners);
+    scratch.inFront.resize(corners);
+    for (size_t k = 0; k < corners; ++k) {
+        const Vec3& p = scene.vertices[size_t(mesh.corners[k])];
+        const Vec3 d = p - x;
+        const double length = glm::length(d);
+        scratch.inFront[k] = glm::dot(n, p - x) - kAbove >= 0.0 && length > 0.0;
+        if (scratch.inFront[k])
+            scratch.unit[k] = d / length;
+    }
+    scratch.term.resize(mesh.edges.size());
+    scratch.termDone.assign(mesh.edges.size(), 0);
+    out.resize(mesh.ofElement.size());
+    for (size_t s = 0; s < mesh.ofElement.size(); ++s) {
+        double sum = 0.0;
+        bool whole = true;
+        for (const auto& [edge, reversed] : mesh.ofElement[s]) {
+            const std::array<int, 2>& e = mesh.edges[size_t(edge)];
+            if (!scratch.inFront[size_t(e[0])] || !scratch.inFront[size_t(e[1])]) {
+                whole = false;
+                break;
+            }
+            if (!scratch.termDone[size_t(edge)]) {
+                const Vec3& a = scratch.unit[size_t(e[0])];
+                const Vec3& b = scratch.unit[size_t(e[1])];
+                const Vec3 c = glm::cross(a, b);
+                const double sine = glm::length(c);
+                scratch.term[size_t(edge)] =
+                    sine <= 0.0 ? 0.0 : edgeAngle(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
+                scratch.termDone[size_t(edge)] = 1;
+            }
+            sum += reversed ? -scratch.term[size_t(edge)] : scratch.term[size_t(edge)];
+        }
+        out[s] = whole ? std::abs(sum) / (2.0 * std::numbers::pi) : std::numeric_limits<double>::quiet_NaN();
+    }
+}
+
+// nearFactor(from, e) for every element `from` of the shooter into
+// `factors`, the same numbers: where e is no larger than the shooter's
+// element the contour formula is taken at e's points against each of them,
+// and those points are shared.
+void nearFactors(const PreparedScene& scene, const Patch& patch, const ShooterMesh& mesh, const Element& e,
+                 SharedScratch& scratch, std::vector<double>& factors)
+{
+    const auto corner = [&](int v) { return scene.vertices[size_t(v)]; };
+    const Vec3 a = corner(e.vertices[0]), b = corner(e.vertices[1]), c = corner(e.vertices[2]);
+    const double size = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    const std::array<Vec3, 4> points{(4.0 * a + b + c) / 6.0, (a + 4.0 * b + c) / 6.0, (a + b + 4.0 * c) / 6.0,
+                                     e.centroid};
+    std::array<bool, 4> done{}; // the shared factors at each point are computed when first wanted
+    const auto shared = [&](size_t i, size_t s) {
+        if (!done[i]) {
+            sharedFormFactors(scene, mesh, points[i], e.normal, scratch, scratch.at[i]);
+            done[i] = true;
+        }
+        return scratch.at[i][s];
+    };
+    factors.assign(size_t(patch.elementCount), 0.0);
+    for (int s = 0; s < patch.elementCount; ++s) {
+        const Element& from = scene.elements[size_t(patch.firstElement + s)];
+        if (e.area > from.area) {
+            factors[size_t(s)] = nearFactor(from, e, corner);
+            continue;
+        }
+        const std::array<Vec3, 3> polygon{corner(from.vertices[0]), corner(from.vertices[1]), corner(from.vertices[2])};
+        const auto formFactorAt = [&](size_t i) {
+            const double f = shared(i, size_t(s));
+            return std::isnan(f) ? formFactorOf(points[i], e.normal, polygon) : f;
+        };
+        const double distance = std::abs(glm::dot(from.normal, e.centroid - polygon[0]));
+        double mean = 0.0;
+        if (size < 0.25 * distance) {
+            mean = formFactorAt(3);
+        } else {
+            for (size_t i = 0; i < 4; ++i)
+                mean += formFactorAt(i) / 4.0;
+        }
+        factors[size_t(s)] = mean * e.area / from.area;
+    }
 }
 
 // A receiver on a face facing the shooter's, beyond the shooter's longest
@@ -169,8 +308,11 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
     constexpr size_t kChunk = 64;
     const size_t chunks = (candidates.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<NearTerm>> terms(chunks);
+    const ShooterMesh mesh(scene, patch);
     const auto computeChunks = [&](size_t firstChunk, size_t endChunk) {
-        std::vector<double> weights; // scratch for appendFacingTerms
+        std::vector<double> weights;  // scratch for appendFacingTerms
+        std::vector<double> fromEach; // F(from -> e) for each element of the shooter
+        SharedScratch scratch;
         for (size_t c = firstChunk; c < endChunk; ++c) {
             std::vector<NearTerm>& out = terms[c];
             for (size_t i = c * kChunk; i < std::min(candidates.size(), (c + 1) * kChunk); ++i) {
@@ -182,11 +324,10 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
                 }
                 // The form factor from each shooter element: this close, the
                 // gradient across the shooter matters.
-                for (int s = 0; s < patch.elementCount; ++s) {
-                    const Element& from = scene.elements[size_t(patch.firstElement + s)];
-                    if (const double factor = nearFactor(from, e, corner); factor > 0.0) // F(from -> e)
+                nearFactors(scene, patch, mesh, e, scratch, fromEach);
+                for (int s = 0; s < patch.elementCount; ++s)
+                    if (const double factor = fromEach[size_t(s)]; factor > 0.0)
                         out.push_back({std::uint32_t(k), s, factor});
-                }
             }
         }
     };

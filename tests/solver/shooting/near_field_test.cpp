@@ -3,6 +3,8 @@
 // far share that keeps every shooter element at the hemicube's total.
 #include "solver/shooting/near_field.h"
 
+#include "solver/shooting/edge_angle.h"
+
 #include "support/adaptive_scenes.h"
 #include "support/prepared_scenes.h"
 
@@ -86,6 +88,29 @@ TEST(NearField, ThePointToPolygonFactorIsTheClosedFormOfARectangleOverACorner)
         const std::vector<Vec3> rectangle{{0, 0, c}, {0, b, c}, {a, b, c}, {a, 0, c}};
         EXPECT_NEAR(pointToPolygonFormFactor({0, 0, 0}, {0, 0, 1}, rectangle), cornerFormFactor(a, b, c), 1e-12);
     }
+}
+
+TEST(NearField, TheEdgeAngleIsTheArctangentToTheLastBitsOverTheWholeHalfTurn)
+{
+    // Angles from 1e-12 rad to pi, both sides of the branch points (0.66,
+    // tan 3pi/8, a right angle), from unit vectors' sines and cosines.
+    double worst = 0.0;
+    for (int i = 0; i <= 200000; ++i) {
+        const double t = std::numbers::pi * i / 200000.0;
+        for (const double angle : {t, t + 1e-12, std::ldexp(1.0, -i % 60) * t}) {
+            const double sine = std::sin(angle), cosine = std::cos(angle);
+            if (sine < 0.0)
+                continue;
+            const double exact = std::atan2(sine, cosine);
+            const double error = std::abs(edgeAngle(sine, cosine) - exact);
+            worst = std::max(worst, error / std::max(exact, 1e-300));
+            ASSERT_LE(error, 4e-16 * std::max(exact, 1e-300) + 1e-300) << angle;
+        }
+    }
+    std::printf("edge angle against std::atan2: worst relative error %.2g\n", worst);
+    EXPECT_EQ(edgeAngle(0.0, 1.0), 0.0);
+    EXPECT_EQ(edgeAngle(1.0, 0.0), std::numbers::pi / 2.0);
+    EXPECT_EQ(edgeAngle(0.0, -1.0), std::numbers::pi);
 }
 
 TEST(NearField, OnlyThePartInFrontOfThePointCounts)
