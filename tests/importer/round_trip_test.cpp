@@ -112,13 +112,11 @@ TEST_P(RoundTrip, GivesTheSameFacesAndTheSameRadiosity)
     //     (Before the hemicubes were turned by where each patch lies, the
     //     board's 3 cm front edge, seen edge-on from the lamp, changed by
     //     42 % with the pixels it happened to cover.)
+    test::roundToFloats(original);
     for (model::Object& object : original.objects)
-        for (model::Part& part : object.parts) {
-            for (model::Vec3& v : part.vertices)
-                v = model::Vec3(glm::vec3(v));
+        for (model::Part& part : object.parts)
             for (model::Face& face : part.faces)
                 model::startAtLeastCorner(face.loop, part.vertices);
-        }
     std::unique_ptr<solver::Solver> solved;
     const std::map<std::string, model::Rgb> before = solve(original, &solved);
     ASSERT_TRUE(solved);

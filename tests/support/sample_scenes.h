@@ -5,6 +5,8 @@
 #include "model/io/scene_json.h"
 #include "model/scene.h"
 
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
@@ -45,6 +47,16 @@ inline model::Scene loadSample(const std::string& name)
             "cannot load the sample scene " + path.string() + ": " +
             (read.diagnostics().empty() ? std::string("no diagnostic") : read.diagnostics().front().message));
     return std::move(*read);
+}
+
+// Every vertex rounded to a 32-bit float, as a model file (OBJ, glTF, PLY)
+// holds it.
+inline void roundToFloats(model::Scene& scene)
+{
+    for (model::Object& object : scene.objects)
+        for (model::Part& part : object.parts)
+            for (model::Vec3& v : part.vertices)
+                v = model::Vec3(glm::vec3(v));
 }
 
 } // namespace regio::test

@@ -272,10 +272,7 @@ TEST(Prepare, MeshesTheSampleScenesAlikeWithTheirCoordinatesRoundedToFloats)
     for (const char* name : {"cornell-box", "two-lights-room"}) {
         const model::Scene authored = test::loadSample(name);
         model::Scene rounded = authored;
-        for (model::Object& object : rounded.objects)
-            for (model::Part& part : object.parts)
-                for (model::Vec3& v : part.vertices)
-                    v = model::Vec3(glm::vec3(v));
+        test::roundToFloats(rounded);
         const model::Result<PreparedScene> a = prepareScene(authored);
         const model::Result<PreparedScene> b = prepareScene(rounded);
         ASSERT_TRUE(a.ok() && b.ok()) << name;
