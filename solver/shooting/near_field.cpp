@@ -133,7 +133,6 @@ struct SharedScratch {
     std::vector<Vec3> unit;
     std::vector<char> inFront;
     std::vector<double> term;
-    std::vector<char> termDone;
     std::array<std::vector<double>, 4> at; // the shared factors at each of a receiver's points
 };
 
@@ -149,15 +148,25 @@ void sharedFormFactors(const PreparedScene& scene, const ShooterMesh& mesh, cons
     scratch.unit.resize(corners);
     scratch.inFront.resize(corners);
     for (size_t k = 0; k < corners; ++k) {
-        const Vec3& p = scene.vertices[size_t(mesh.corners[k])];
-        const Vec3 d = p - x;
+        const Vec3 d = scene.vertices[size_t(mesh.corners[k])] - x;
         const double length = glm::length(d);
-        scratch.inFront[k] = glm::dot(n, p - x) - kAbove >= 0.0 && length > 0.0;
+        scratch.inFront[k] = glm::dot(n, d) - kAbove >= 0.0 && length > 0.0;
         if (scratch.inFront[k])
             scratch.unit[k] = d / length;
     }
+    // Every edge with both corners in front: those are the edges of the
+    // elements taken here.
     scratch.term.resize(mesh.edges.size());
-    scratch.termDone.assign(mesh.edges.size(), 0);
+    for (size_t k = 0; k < mesh.edges.size(); ++k) {
+        const auto [first, second] = mesh.edges[k];
+        if (!scratch.inFront[size_t(first)] || !scratch.inFront[size_t(second)])
+            continue;
+        const Vec3& a = scratch.unit[size_t(first)];
+        const Vec3& b = scratch.unit[size_t(second)];
+        const Vec3 c = glm::cross(a, b);
+        const double sine = glm::length(c);
+        scratch.term[k] = sine <= 0.0 ? 0.0 : edgeAngle(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
+    }
     out.resize(mesh.ofElement.size());
     for (size_t s = 0; s < mesh.ofElement.size(); ++s) {
         double sum = 0.0;
@@ -167,15 +176,6 @@ void sharedFormFactors(const PreparedScene& scene, const ShooterMesh& mesh, cons
             if (!scratch.inFront[size_t(e[0])] || !scratch.inFront[size_t(e[1])]) {
                 whole = false;
                 break;
-            }
-            if (!scratch.termDone[size_t(edge)]) {
-                const Vec3& a = scratch.unit[size_t(e[0])];
-                const Vec3& b = scratch.unit[size_t(e[1])];
-                const Vec3 c = glm::cross(a, b);
-                const double sine = glm::length(c);
-                scratch.term[size_t(edge)] =
-                    sine <= 0.0 ? 0.0 : edgeAngle(sine, glm::dot(a, b)) * glm::dot(n, c) / sine;
-                scratch.termDone[size_t(edge)] = 1;
             }
             sum += reversed ? -scratch.term[size_t(edge)] : scratch.term[size_t(edge)];
         }
