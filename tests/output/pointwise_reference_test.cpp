@@ -1,6 +1,7 @@
 // The pointwise radiosity reference of tests/support/pointwise_reference.h,
 // checked against answers known in closed form before anything is measured
 // against it: form factors, visibility, the furnace, reciprocity.
+#include "support/closed_forms.h"
 #include "support/pointwise_reference.h"
 #include "support/solver_test_scenes.h"
 
@@ -18,16 +19,6 @@ using namespace regio::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Differential area to a parallel rectangle a x b at distance c, the normal
-// of the area passing through a corner of the rectangle (the classical
-// closed form, e.g. Howell's catalogue of configuration factors).
-double cornerFormFactor(double a, double b, double c)
-{
-    const double x = a / c, y = b / c;
-    const double sx = std::sqrt(1.0 + x * x), sy = std::sqrt(1.0 + y * y);
-    return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2.0 * kPi);
-}
 
 // The form factor from a differential area at x (unit normal n) to the
 // parallelogram p0 + s e1 + t e2, s, t in [0, 1], straight from its

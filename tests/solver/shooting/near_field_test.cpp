@@ -6,6 +6,7 @@
 #include "solver/shooting/edge_angle.h"
 
 #include "support/adaptive_scenes.h"
+#include "support/closed_forms.h"
 #include "support/prepared_scenes.h"
 
 #include <gtest/gtest.h>
@@ -22,17 +23,9 @@ using namespace regio;
 using namespace regio::solver;
 using model::Vec3;
 
-namespace {
+using test::cornerFormFactor;
 
-// A point below a corner of a parallel a x b rectangle at height c (the
-// classic closed form of the differential-area-to-rectangle factor).
-double cornerFormFactor(double a, double b, double c)
-{
-    const double x = a / c, y = b / c;
-    return (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
-            y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
-           (2.0 * std::numbers::pi);
-}
+namespace {
 
 // The vertices of an element.
 std::vector<Vec3> triangleOf(const PreparedScene& s, const Element& e)
