@@ -16,7 +16,7 @@ namespace regio::solver {
 namespace {
 
 // At most this many corners (a clipped polygon has one more than it had).
-constexpr size_t kMaxCorners = 16;
+constexpr size_t kMaxCorners = kMaxContourCorners;
 
 double formFactorOf(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon)
 {

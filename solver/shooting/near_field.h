@@ -43,8 +43,13 @@ namespace regio::solver {
 // How much farther the near field reaches between facing faces.
 inline constexpr double kFacingReach = 3.0;
 
-// Form factor from a point with unit normal n to a convex polygon (the part
-// in front of the point's plane), by Lambert's contour formula.
+// The most corners of a polygon that pointToPolygonFormFactor takes (it
+// works without allocating: a row's near receivers call it often).
+inline constexpr size_t kMaxContourCorners = 16;
+
+// Form factor from a point with unit normal n to a convex polygon of at most
+// kMaxContourCorners corners (the part in front of the point's plane), by
+// Lambert's contour formula.
 double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon);
 
 // A near receiver's factor from one element of the shooter: the shooter's
