@@ -4,6 +4,7 @@
 #include "cli/scene_input.h"
 
 #include "model/io/printable.h"
+#include "output/exact_direct.h"
 #include "output/report.h"
 #include "output/vertex_radiosity.h"
 
@@ -49,7 +50,9 @@ model::Check writeSolutionOutputs(const SolveOptions& options, const std::vector
     if (requests.empty())
         return model::success();
     const solver::SolutionSnapshot snapshot = s.snapshot();
-    const output::LitMesh mesh = output::litMeshForOutput(s.prepared(), snapshot.radiosity, !options.flat);
+    const output::LitMesh mesh =
+        output::litMeshForOutput(s.prepared(), snapshot.radiosity, !options.flat,
+                                 output::directShare(s.prepared(), s.shooting().unshotRadiosity()));
     for (output::OutputRequest request : requests) {
         request.camera = scene.camera;
         if (request.includeAmbient)

@@ -1,5 +1,8 @@
 #include "output/vertex_radiosity.h"
 
+#include "output/exact_direct.h"
+#include "output/point_grid.h"
+
 #include "model/geometry/edge_key.h"
 
 #include <glm/geometric.hpp>
@@ -77,51 +80,6 @@ Grouping groupElements(const PreparedScene& scene)
     }
     return g;
 }
-
-struct CellHash {
-    size_t operator()(const std::array<int64_t, 3>& c) const
-    {
-        uint64_t h = 1469598103934665603ull;
-        for (int64_t v : c)
-            h = (h ^ static_cast<uint64_t>(v)) * 1099511628211ull;
-        return static_cast<size_t>(h);
-    }
-};
-
-// A uniform grid of point ids; lookups visit the 3 x 3 x 3 cells around a
-// point, so everything within one cell size of it is found.
-class PointGrid {
-public:
-    explicit PointGrid(double cell)
-        : m_cell(cell)
-    {
-    }
-
-    std::array<int64_t, 3> cellOf(const Vec3& p) const
-    {
-        return {static_cast<int64_t>(std::floor(p.x / m_cell)), static_cast<int64_t>(std::floor(p.y / m_cell)),
-                static_cast<int64_t>(std::floor(p.z / m_cell))};
-    }
-    void insert(const Vec3& p, int id) { m_cells[cellOf(p)].push_back(id); }
-
-    template <typename F>
-    void forNear(const Vec3& p, F&& visit) const
-    {
-        const auto c = cellOf(p);
-        for (int64_t dx = -1; dx <= 1; ++dx)
-            for (int64_t dy = -1; dy <= 1; ++dy)
-                for (int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto it = m_cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-                    if (it != m_cells.end())
-                        for (int id : it->second)
-                            visit(id);
-                }
-    }
-
-private:
-    double m_cell;
-    std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> m_cells;
-};
 
 // The points of `grid` (ids into `positions`) that lie on the inside of the
 // segment a-b, within `tolerance` of it and farther than that from its ends,
@@ -627,10 +585,15 @@ LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRa
     return SmoothShading(scene, options).litMesh(elementRadiosity);
 }
 
-LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth)
+LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth,
+                         double directShare)
 {
-    if (smooth)
-        return smoothLitMesh(scene, elementRadiosity);
+    if (smooth) {
+        if (elementRadiosity.size() != scene.elements.size())
+            throw std::invalid_argument("litMeshForOutput: " + std::to_string(elementRadiosity.size()) +
+                                        " radiosity values for " + std::to_string(scene.elements.size()) + " elements");
+        return ExactDirectShading(scene).litMesh(elementRadiosity, directShare);
+    }
     return litMeshFromSolution(scene, std::vector<Rgb>(elementRadiosity.begin(), elementRadiosity.end()));
 }
 

@@ -153,7 +153,12 @@ LitMesh smoothLitMesh(const PreparedScene& scene, std::span<const Rgb> elementRa
                       const SmoothingOptions& options = {});
 
 // What the outputs (exports, images) should draw: smooth vertex radiosity
-// with the default options, or the flat element mesh (litMeshFromSolution).
-LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth);
+// with the default options and the lights' direct part exact
+// (exactDirectLitMesh, output/exact_direct.h), or the flat element mesh
+// (litMeshFromSolution).
+// `directShare`: how much of the lights' emission has been shot (directShare
+// in output/exact_direct.h; 1 for a converged solution).
+LitMesh litMeshForOutput(const PreparedScene& scene, std::span<const Rgb> elementRadiosity, bool smooth,
+                         double directShare = 1.0);
 
 } // namespace regio::output

@@ -1,5 +1,6 @@
-// The error picture of docs/accuracy.md: where the smooth lit mesh that the
-// editor shows differs from the independent pointwise reference
+// The error picture of docs/accuracy.md: where the lit mesh that the editor
+// shows and the outputs write (smooth, the lights' direct part exact)
+// differs from the independent pointwise reference
 // (tests/support/pointwise_reference.h).
 //
 //   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES]]
@@ -126,7 +127,7 @@ int main(int argc, char** argv)
     const std::atomic<bool> cancel{false};
     (*built)->run({}, cancel);
     const solver::SolutionSnapshot snapshot = (*built)->snapshot();
-    const output::LitMesh lit = output::smoothLitMesh((*built)->prepared(), snapshot.radiosity);
+    const output::LitMesh lit = output::litMeshForOutput((*built)->prepared(), snapshot.radiosity, true);
     const glm::vec3 ambient(snapshot.stats.ambient);
     const test::LitMeshProbe probe(lit);
     const output::LitMesh flat = output::litMeshFromSolution((*built)->prepared(), snapshot.radiosity);
@@ -208,7 +209,7 @@ int main(int argc, char** argv)
     std::printf("cells off by more than 10 %%, too bright / too dark:\n");
     for (const auto& [id, counts] : largeByFace)
         std::printf("  %-24s %5d / %5d\n", id.c_str(), counts.first, counts.second);
-    std::printf("per face, mean of the smooth picture and of the elements against the reference's:\n");
+    std::printf("per face, mean of the picture and of the elements against the reference's:\n");
     for (const auto& [id, sums] : meanByFace)
         std::printf("  %-24s %+6.2f %%  %+6.2f %%\n", id.c_str(),
                     100.0 * (sums.smooth - sums.reference) / sums.reference,

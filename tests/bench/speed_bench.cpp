@@ -35,10 +35,13 @@
 // --benchmark_filter). Rows are kept as in a solve (1 GiB), but 100 shots
 // of distinct patches render every one.
 //
-//   preview_frame    the editor's smooth frame of the 100 000-element
-//                    warehouse (output/vertex_radiosity.h): the shading built
-//                    once per mesh, and a frame (vertex values summed from the
-//                    element radiosity, the lit mesh copied), ten frames
+//   preview_frame    the editor's frame of the 100 000-element warehouse
+//                    (output/exact_direct.h): the shading built once per
+//                    mesh, and a frame (vertex values summed from the
+//                    element radiosity, the lit mesh copied), ten frames;
+//                    beside it the smooth shading alone
+//                    (output/vertex_radiosity.h), what the frames cost
+//                    without the lights' direct part
 //
 //   prepare          the regional tree, BSP trees and meshing of a scene of
 //                    about 100 000 faces (the generator with 7300 objects on
@@ -48,6 +51,7 @@
 // Three repetitions each (one for the largest); the machine's load shows in
 // the spread, so read the medians the summary prints. Not a test: timings are
 // never pass/fail.
+#include "output/exact_direct.h"
 #include "output/vertex_radiosity.h"
 #include "solver/solver.h"
 #include "support/furnished_room.h"
@@ -308,6 +312,8 @@ void prepare(benchmark::State& state)
 struct FrameFigures {
     double buildMs = 0.0;
     double frameMs = 0.0;
+    double smoothBuildMs = 0.0; // the smooth shading alone
+    double smoothFrameMs = 0.0;
     double elements = 0.0;
 };
 std::vector<FrameFigures>& frameMeasured()
@@ -333,25 +339,40 @@ void previewFrame(benchmark::State& state)
     FrameFigures fig;
     fig.elements = double(prepared->elements.size());
     using Clock = std::chrono::steady_clock;
+    constexpr int kFrames = 10;
+    const auto milliseconds = [](Clock::time_point a, Clock::time_point b) {
+        return 1000.0 * std::chrono::duration<double>(b - a).count();
+    };
     for (auto _ : state) {
-        const auto start = Clock::now();
-        const output::SmoothShading shading(*prepared);
-        const auto built = Clock::now();
-        constexpr int kFrames = 10;
+        const auto smoothStart = Clock::now();
+        const output::SmoothShading smooth(*prepared);
+        const auto smoothBuilt = Clock::now();
         for (int f = 0; f < kFrames; ++f) {
             radiosity[size_t(f)] *= 1.01; // a new solution each frame
+            const output::LitMesh mesh = smooth.litMesh(radiosity);
+            benchmark::DoNotOptimize(mesh.radiosity.data());
+        }
+        const auto start = Clock::now();
+        const output::ExactDirectShading shading(*prepared);
+        const auto built = Clock::now();
+        for (int f = 0; f < kFrames; ++f) {
+            radiosity[size_t(f)] *= 1.01;
             const output::LitMesh mesh = shading.litMesh(radiosity);
             benchmark::DoNotOptimize(mesh.radiosity.data());
         }
         const auto done = Clock::now();
-        fig.buildMs = 1000.0 * std::chrono::duration<double>(built - start).count();
-        fig.frameMs = 1000.0 * std::chrono::duration<double>(done - built).count() / kFrames;
+        fig.smoothBuildMs = milliseconds(smoothStart, smoothBuilt);
+        fig.smoothFrameMs = milliseconds(smoothBuilt, start) / kFrames;
+        fig.buildMs = milliseconds(start, built);
+        fig.frameMs = milliseconds(built, done) / kFrames;
         state.SetIterationTime(std::chrono::duration<double>(done - start).count());
     }
     frameMeasured().push_back(fig);
     state.counters["elements"] = fig.elements;
     state.counters["build_ms"] = fig.buildMs;
     state.counters["frame_ms"] = fig.frameMs;
+    state.counters["smooth_build_ms"] = fig.smoothBuildMs;
+    state.counters["smooth_frame_ms"] = fig.smoothFrameMs;
 }
 
 void cornell(benchmark::State& state) { converge(state, sample("cornell-box"), "cornell-box"); }
@@ -457,15 +478,17 @@ int main(int argc, char** argv)
         }
     }
     if (!frameMeasured().empty()) {
-        std::vector<double> build, frame;
+        std::vector<double> build, frame, smoothBuild, smoothFrame;
         for (const FrameFigures& f : frameMeasured()) {
             build.push_back(f.buildMs);
             frame.push_back(f.frameMs);
+            smoothBuild.push_back(f.smoothBuildMs);
+            smoothFrame.push_back(f.smoothFrameMs);
         }
         std::printf(
-            "\nThe preview's smooth frame, %.0f elements, medians: shading built in %.1f ms once per mesh, "
-            "a frame in %.1f ms\n",
-            frameMeasured().front().elements, median(build), median(frame));
+            "\nThe preview's frame, %.0f elements, medians: shading built in %.1f ms once per mesh, "
+            "a frame in %.1f ms (the smooth shading alone: %.1f ms and %.1f ms)\n",
+            frameMeasured().front().elements, median(build), median(frame), median(smoothBuild), median(smoothFrame));
     }
     if (!prepareMeasured().empty())
         std::printf("\nPreparation of the 100 000-face scene, median: %.3f s\n", median(prepareMeasured()));
