@@ -78,6 +78,15 @@ bool PreviewSession::continueRun()
     m_done = false;
     m_stopRequested = false;
     m_paused = false;
+    // The last frame now shows a solve that runs again. The run's end is
+    // announced before its final frame is built (see work()), and that
+    // frame can take a while on a mesh the run refined: until it comes, the
+    // latest frame must not pass for the final one.
+    if (m_latest && !m_latest->running) {
+        auto again = std::make_shared<PreviewFrame>(*m_latest);
+        again->running = true;
+        m_latest = std::move(again);
+    }
     m_wake.notify_all();
     return true;
 }

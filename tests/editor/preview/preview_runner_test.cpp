@@ -35,8 +35,11 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <memory>
+#include <thread>
 
 using namespace regio;
 using namespace regio::editor;
@@ -275,6 +278,32 @@ private slots:
         QVERIFY2(QString::fromStdString(diagnostics.back().message).startsWith(expected),
                  diagnostics.back().message.c_str());
         QVERIFY2(session.latestFrame() != nullptr, "the frames before the failure stay");
+    }
+
+    // A run announces its end before its final frame is built, which takes
+    // a while on a mesh the run refined. After Continue, until a frame of
+    // the new run comes, the last one is of a running solve: it must not
+    // pass for the new run's final frame.
+    void afterContinueTheLastFrameIsOfARunningSolveUntilTheNextComes()
+    {
+        PreviewSession::Config config;
+        config.scene = draftSample("cornell-box");
+        config.scene.solver.maxIterations = 5;
+        std::atomic<bool> hold{false}; // keeps the continued run at its first shot
+        config.afterShot = [&hold](const solver::SolverStats&) {
+            while (hold.load())
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        };
+        PreviewSession session(std::move(config), [](SessionEvent) {});
+        QTRY_VERIFY_WITH_TIMEOUT(session.finished() && session.latestFrame() && !session.latestFrame()->running, 60000);
+        QCOMPARE(session.latestFrame()->snapshot.stats.iterations, 5);
+        hold.store(true);
+        QVERIFY(session.continueRun());
+        QVERIFY(session.latestFrame()->running);
+        QCOMPARE(session.latestFrame()->snapshot.stats.iterations, 5);
+        hold.store(false);
+        QTRY_VERIFY_WITH_TIMEOUT(session.finished() && !session.latestFrame()->running, 60000);
+        QCOMPARE(session.latestFrame()->snapshot.stats.iterations, 10);
     }
 
     void aFailedSolveLeavesTheDocumentAsItWasAndTheWindowSolvingAgain()
