@@ -155,42 +155,46 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     // pieces stay apart by kMinSeparation (see the header). The lit mesh's
     // faces are the scene's input faces, in order.
     const auto position = [&](std::uint32_t v) { return Vec3(smooth.positions[v]); };
-    std::unordered_map<std::uint64_t, bool> cut; // per edge: cut at its midpoint
-    cut.reserve(smooth.indices.size());
+    struct EdgeState {
+        bool cut = true;   // cut at its midpoint
+        int triangles = 0; // of the mesh that have it: 1 on a group's outline
+    };
+    std::unordered_map<std::uint64_t, EdgeState> edges;
+    edges.reserve(2 * smooth.indices.size());
     for (size_t t = 0; t < smooth.triangleCount(); ++t)
         for (size_t k = 0; k < 3; ++k) {
             const std::uint32_t a = smooth.indices[3 * t + k], b = smooth.indices[3 * t + (k + 1) % 3];
             const std::uint32_t c = smooth.indices[3 * t + (k + 2) % 3];
             const Vec3 mid = 0.5 * (position(a) + position(b));
-            const bool apart = glm::length(position(b) - position(a)) >= 2.0 * kMinSeparation &&
-                               glm::length(position(c) - mid) >= kMinSeparation;
-            const auto [found, added] = cut.try_emplace(edgeKey(a, b), apart);
-            if (!added)
-                found->second = found->second && apart;
+            EdgeState& edge = edges[edgeKey(a, b)];
+            edge.cut = edge.cut && glm::length(position(b) - position(a)) >= 2.0 * kMinSeparation &&
+                       glm::length(position(c) - mid) >= kMinSeparation;
+            ++edge.triangles;
         }
     // Nor where its midpoint would come within kMinSeparation of another
-    // corner of the mesh (another face's, a hair apart) without being on it.
-    std::vector<Vec3> corners;
-    PointGrid grid(kMinSeparation);
+    // corner of the mesh without being on it: a corner of another group,
+    // where two faces meet or touch, or the midpoint of one of its edges.
+    std::vector<Vec3> near;
+    PointGrid grid(2.0 * kMinSeparation);
     const auto add = [&](const Vec3& p) {
-        grid.insert(p, int(corners.size()));
-        corners.push_back(p);
+        grid.insert(p, int(near.size()));
+        near.push_back(p);
     };
     for (size_t v = 0; v < smooth.vertexCount(); ++v)
         add(position(std::uint32_t(v)));
     for (size_t t = 0; t < smooth.triangleCount(); ++t)
         for (size_t k = 0; k < 3; ++k) {
             const std::uint32_t a = smooth.indices[3 * t + k], b = smooth.indices[3 * t + (k + 1) % 3];
-            bool& apart = cut.at(edgeKey(a, b));
-            if (!apart)
+            EdgeState& edge = edges.at(edgeKey(a, b));
+            if (!edge.cut)
                 continue;
             const Vec3 mid = 0.5 * (position(a) + position(b));
-            grid.forNear(mid, [&](int other) {
-                const double d = glm::length(corners[size_t(other)] - mid);
+            grid.forNearest(mid, [&](int other) {
+                const double d = glm::length(near[size_t(other)] - mid);
                 if (d > 1e-7 && d < kMinSeparation)
-                    apart = false;
+                    edge.cut = false;
             });
-            if (apart)
+            if (edge.cut)
                 add(mid);
         }
     LitMesh& mesh = m_geometry;
@@ -229,7 +233,7 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
         bool split[3]; // edge k runs from v[k] to v[k + 1]
         int count = 0;
         for (size_t k = 0; k < 3; ++k)
-            count += (split[k] = cut.at(edgeKey(v[k], v[(k + 1) % 3]))) ? 1 : 0;
+            count += (split[k] = edges.at(edgeKey(v[k], v[(k + 1) % 3])).cut) ? 1 : 0;
         // Turned so that the cut edges come first: edge 0 (one cut), edges 0
         // and 1 (two).
         size_t turn = 0;

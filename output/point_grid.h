@@ -52,6 +52,26 @@ public:
                 }
     }
 
+    // As forNear, for points within half a cell of p only: the 2 x 2 x 2
+    // cells nearest to it (on each axis the cell it is in and the
+    // neighbour on the side of the cell's middle it lies on).
+    template <typename F>
+    void forNearest(const Vec3& p, F&& visit) const
+    {
+        const auto c = cellOf(p);
+        std::array<int64_t, 3> low{};
+        for (size_t k = 0; k < 3; ++k)
+            low[k] = p[static_cast<glm::length_t>(k)] / m_cell - static_cast<double>(c[k]) < 0.5 ? c[k] - 1 : c[k];
+        for (int64_t dx = 0; dx <= 1; ++dx)
+            for (int64_t dy = 0; dy <= 1; ++dy)
+                for (int64_t dz = 0; dz <= 1; ++dz) {
+                    const auto it = m_cells.find({low[0] + dx, low[1] + dy, low[2] + dz});
+                    if (it != m_cells.end())
+                        for (int id : it->second)
+                            visit(id);
+                }
+    }
+
 private:
     double m_cell;
     std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> m_cells;

@@ -1,6 +1,5 @@
 #include "editor/preview/preview_session.h"
 
-#include "output/exact_direct.h"
 #include "output/vertex_radiosity.h"
 #include "solver/shooting/shooting.h"
 #include "solver/visibility/hemicube_view.h"
@@ -175,23 +174,20 @@ void PreviewSession::publish(bool running)
         }
         for (const solver::Region& r : prepared.regions)
             frame->regionIds.push_back(r.id);
-        // The outputs' picture in every frame (smooth vertex radiosity, §6,
-        // with the lights' direct part exact: output/exact_direct.h), so the
-        // view never switches between two looks: the welding,
-        // re-triangulation and direct light are done once per mesh (the
-        // direct light only at corners new to the mesh), and a frame only
-        // sums each vertex's elements. The direct part shows as
-        // much of itself as the lights have shot. The mesh only grows
-        // (refinement rounds), so its element and vertex counts tell when it
-        // changed.
+        // Smooth vertex radiosity (§6) in every frame, so the view never
+        // switches between two looks: the welding and re-triangulation (about
+        // 5 us an element) are done once per mesh, and a frame only sums each
+        // vertex's elements. The mesh only grows (refinement rounds), so its
+        // element and vertex counts tell when it changed. (The outputs take
+        // the lights' direct part exact, output/exact_direct.h; building that
+        // once per mesh costs several times this, and during refinement
+        // rounds the frames would thin out: not in the preview yet.)
         if (!m_shading || m_shading->elementCount() != prepared.elements.size() ||
             m_shadedVertices != prepared.vertices.size()) {
-            m_shading =
-                std::make_unique<output::ExactDirectShading>(prepared, output::SmoothingOptions{}, &m_directCache);
+            m_shading = std::make_unique<output::SmoothShading>(prepared);
             m_shadedVertices = prepared.vertices.size();
         }
-        frame->lit = std::make_shared<output::LitMesh>(
-            m_shading->litMesh(radiosity, output::directShare(prepared, frame->unshot)));
+        frame->lit = std::make_shared<output::LitMesh>(m_shading->litMesh(radiosity));
     } else {
         frame->smooth = false;
         frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(frame->snapshot));

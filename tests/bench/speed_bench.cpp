@@ -35,13 +35,13 @@
 // --benchmark_filter). Rows are kept as in a solve (1 GiB), but 100 shots
 // of distinct patches render every one.
 //
-//   preview_frame    the editor's frame of the 100 000-element warehouse
-//                    (output/exact_direct.h): the shading built once per
-//                    mesh, and a frame (vertex values summed from the
-//                    element radiosity, the lit mesh copied), ten frames;
-//                    beside it the smooth shading alone
-//                    (output/vertex_radiosity.h), what the frames cost
-//                    without the lights' direct part
+//   preview_frame    the editor's smooth frame of the 100 000-element
+//                    warehouse (output/vertex_radiosity.h): the shading
+//                    built once per mesh, and a frame (vertex values summed
+//                    from the element radiosity, the lit mesh copied), ten
+//                    frames; beside it the same with the lights' direct
+//                    part exact (output/exact_direct.h), what the outputs
+//                    draw
 //
 //   prepare          the regional tree, BSP trees and meshing of a scene of
 //                    about 100 000 faces (the generator with 7300 objects on
@@ -486,9 +486,9 @@ int main(int argc, char** argv)
             smoothFrame.push_back(f.smoothFrameMs);
         }
         std::printf(
-            "\nThe preview's frame, %.0f elements, medians: shading built in %.1f ms once per mesh, "
-            "a frame in %.1f ms (the smooth shading alone: %.1f ms and %.1f ms)\n",
-            frameMeasured().front().elements, median(build), median(frame), median(smoothBuild), median(smoothFrame));
+            "\nThe preview's smooth frame, %.0f elements, medians: shading built in %.1f ms once per mesh, "
+            "a frame in %.1f ms (with the direct part exact, as the outputs draw: %.1f ms and %.1f ms)\n",
+            frameMeasured().front().elements, median(smoothBuild), median(smoothFrame), median(build), median(frame));
     }
     if (!prepareMeasured().empty())
         std::printf("\nPreparation of the 100 000-face scene, median: %.3f s\n", median(prepareMeasured()));
