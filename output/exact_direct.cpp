@@ -1,5 +1,6 @@
 #include "output/exact_direct.h"
 
+#include "output/flat_index.h"
 #include "output/point_grid.h"
 #include "solver/picture/direct_light.h"
 
@@ -13,7 +14,6 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -26,29 +26,23 @@ namespace {
 // (the importer does), which would fold the triangles between them.
 constexpr double kMinSeparation = 1.25e-3;
 
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
-{
-    return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
-}
-
 // A place of a face: points this close are one place.
 constexpr double kPlace = 1e-6; // metres
 struct PlaceKey {
-    int face;
-    long long x, y, z;
+    int face = -1;
+    long long x = 0, y = 0, z = 0;
     bool operator==(const PlaceKey&) const = default;
 };
 struct PlaceHash {
-    size_t operator()(const PlaceKey& k) const
-    {
-        std::uint64_t h = static_cast<std::uint32_t>(k.face);
-        h *= 0x9E3779B97F4A7C15u;
-        for (const long long c : {k.x, k.y, k.z})
-            h = (h ^ static_cast<std::uint64_t>(c)) * 0x100000001B3u;
-        return size_t(h ^ (h >> 29));
-    }
+    std::uint64_t operator()(const PlaceKey& k) const { return hashIntegers({k.face, k.x, k.y, k.z}); }
 };
-using PlaceValues = std::unordered_map<PlaceKey, Rgb, PlaceHash>;
+using PlaceIndex = FlatIndex<PlaceKey, PlaceHash>;
+
+// The direct part at places already computed.
+struct PlaceValues {
+    PlaceIndex index;
+    std::vector<Rgb> values; // by the index's numbers
+};
 
 // The points of faces where the direct part is wanted, each place once (an
 // element's edge midpoint and the cut's midpoint there, a float's rounding
@@ -56,15 +50,21 @@ using PlaceValues = std::unordered_map<PlaceKey, Rgb, PlaceHash>;
 // cutting of the lights by what stands between take nearly all of the time.
 class DirectSamples {
 public:
-    static constexpr size_t kNone = ~size_t(0);
+    static constexpr std::uint32_t kNone = ~std::uint32_t(0);
 
-    size_t add(int face, const Vec3& p)
+    explicit DirectSamples(size_t expected)
+        : m_index(expected)
     {
-        const PlaceKey key = placeOf(face, p);
-        const auto [found, added] = m_index.try_emplace(key, m_points.size());
+        m_points.reserve(expected);
+    }
+
+    std::uint32_t add(int face, const Vec3& p)
+    {
+        const auto [index, added] =
+            m_index.insert({face, std::llround(p.x / kPlace), std::llround(p.y / kPlace), std::llround(p.z / kPlace)});
         if (added)
             m_points.emplace_back(face, p);
-        return found->second;
+        return index;
     }
 
     // The values at every place: from `known`, when given, where it has
@@ -73,11 +73,12 @@ public:
     {
         std::vector<Rgb> values(m_points.size());
         std::vector<size_t> missing;
-        for (const auto& [key, index] : m_index) {
-            if (const auto found = known ? known->find(key) : PlaceValues::iterator{}; known && found != known->end())
-                values[index] = found->second;
+        for (std::uint32_t i = 0; i < m_points.size(); ++i) {
+            if (const std::uint32_t found = known ? known->index.find(m_index.key(i)) : PlaceIndex::kNone;
+                found != PlaceIndex::kNone)
+                values[i] = known->values[found];
             else
-                missing.push_back(index);
+                missing.push_back(i);
         }
         std::atomic<size_t> next{0};
         const auto work = [&] {
@@ -95,22 +96,95 @@ public:
         work();
         for (std::thread& helper : helpers)
             helper.join();
-        if (known)
-            for (const size_t index : missing)
-                known->try_emplace(keyOf(index), values[index]);
+        if (known) {
+            known->index.reserve(known->index.size() + missing.size());
+            for (const size_t i : missing)
+                if (known->index.insert(m_index.key(std::uint32_t(i))).second)
+                    known->values.push_back(values[i]);
+        }
         return values;
     }
 
 private:
-    static PlaceKey placeOf(int face, const Vec3& p)
-    {
-        return {face, std::llround(p.x / kPlace), std::llround(p.y / kPlace), std::llround(p.z / kPlace)};
-    }
-    PlaceKey keyOf(size_t index) const { return placeOf(m_points[index].first, m_points[index].second); }
-
-    std::unordered_map<PlaceKey, size_t, PlaceHash> m_index;
+    PlaceIndex m_index;
     std::vector<std::pair<int, Vec3>> m_points;
 };
+
+// The edges of a triangle mesh, each once: per triangle side (3 t + k, from
+// corner k to corner k + 1) the index of its edge. The sides are bucketed
+// by their lower vertex; within a vertex's few sides, equal upper vertices
+// are one edge.
+std::vector<std::uint32_t> edgesOfSides(const std::vector<std::uint32_t>& indices, size_t vertexCount,
+                                        size_t& edgeCount)
+{
+    const size_t sides = indices.size();
+    const auto ends = [&](size_t side) {
+        const std::uint32_t a = indices[side], b = indices[side - side % 3 + (side % 3 + 1) % 3];
+        return std::pair(std::min(a, b), std::max(a, b));
+    };
+    std::vector<std::uint32_t> start(vertexCount + 1, 0);
+    for (size_t side = 0; side < sides; ++side)
+        ++start[ends(side).first + 1];
+    for (size_t v = 0; v < vertexCount; ++v)
+        start[v + 1] += start[v];
+    std::vector<std::uint32_t> bucket(sides);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (size_t side = 0; side < sides; ++side)
+        bucket[fill[ends(side).first]++] = std::uint32_t(side);
+    std::vector<std::uint32_t> edgeOf(sides);
+    edgeCount = 0;
+    for (size_t v = 0; v < vertexCount; ++v)
+        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const std::uint32_t upper = ends(bucket[i]).second;
+            std::uint32_t j = start[v];
+            while (j < i && ends(bucket[j]).second != upper)
+                ++j;
+            edgeOf[bucket[i]] = j < i ? edgeOf[bucket[j]] : std::uint32_t(edgeCount++);
+        }
+    return edgeOf;
+}
+
+// A triangle side's successor in its triangle.
+size_t nextSide(size_t side) { return side - side % 3 + (side % 3 + 1) % 3; }
+
+// midpointOf per edge: kMayCut (to be cut), kUncut, or the midpoint's vertex.
+constexpr std::uint32_t kMayCut = 0; // no midpoint is vertex 0: they follow the mesh's own
+constexpr std::uint32_t kUncut = ~std::uint32_t(0);
+
+// Leaves uncut every edge whose midpoint would come within kMinSeparation
+// of another corner of the mesh without being on it: a corner of another
+// group, where two faces meet or touch, or the midpoint of an edge cut
+// before it.
+void keepMidpointsApart(const LitMesh& mesh, const std::vector<std::uint32_t>& edgeOf,
+                        std::vector<std::uint32_t>& midpointOf)
+{
+    const std::vector<std::uint32_t>& corner = mesh.indices;
+    const auto position = [&](std::uint32_t v) { return Vec3(mesh.positions[v]); };
+    std::vector<Vec3> near;
+    near.reserve(mesh.vertexCount() + midpointOf.size());
+    PointGrid grid(2.0 * kMinSeparation);
+    const auto add = [&](const Vec3& p) {
+        grid.insert(p, int(near.size()));
+        near.push_back(p);
+    };
+    for (size_t v = 0; v < mesh.vertexCount(); ++v)
+        add(position(std::uint32_t(v)));
+    std::vector<char> checked(midpointOf.size(), 0);
+    for (size_t side = 0; side < corner.size(); ++side) {
+        const std::uint32_t edge = edgeOf[side];
+        if (midpointOf[edge] == kUncut || checked[edge])
+            continue;
+        checked[edge] = 1;
+        const Vec3 mid = 0.5 * (position(corner[side]) + position(corner[nextSide(side)]));
+        grid.forNearest(mid, [&](int other) {
+            const double d = glm::length(near[size_t(other)] - mid);
+            if (d > 1e-7 && d < kMinSeparation)
+                midpointOf[edge] = kUncut;
+        });
+        if (midpointOf[edge] != kUncut)
+            add(mid);
+    }
+}
 
 } // namespace
 
@@ -125,9 +199,10 @@ DirectCache::DirectCache()
 
 DirectCache::~DirectCache() = default;
 
-size_t DirectCache::size() const { return m_places->values.size(); }
+size_t DirectCache::size() const { return m_places->values.values.size(); }
 
-ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const SmoothingOptions& options, DirectCache* cache)
+ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const SmoothingOptions& options, DirectCache* cache,
+                                       CutFor cutFor)
     : m_smooth(scene, options)
 {
     const LitMesh smooth = m_smooth.litMesh(std::vector<Rgb>(scene.elements.size(), Rgb(0.0)));
@@ -140,8 +215,8 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     }
     // Each element's direct part will be the mean of the exact values at
     // its edges' midpoints.
-    DirectSamples samples;
-    std::vector<size_t> elementSamples(3 * scene.elements.size());
+    DirectSamples samples(2 * (scene.elements.size() + smooth.vertexCount()));
+    std::vector<std::uint32_t> elementSamples(3 * scene.elements.size());
     for (size_t e = 0; e < scene.elements.size(); ++e) {
         const solver::Element& element = scene.elements[e];
         for (size_t k = 0; k < 3; ++k)
@@ -155,48 +230,24 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     // pieces stay apart by kMinSeparation (see the header). The lit mesh's
     // faces are the scene's input faces, in order.
     const auto position = [&](std::uint32_t v) { return Vec3(smooth.positions[v]); };
-    struct EdgeState {
-        bool cut = true;   // cut at its midpoint
-        int triangles = 0; // of the mesh that have it: 1 on a group's outline
-    };
-    std::unordered_map<std::uint64_t, EdgeState> edges;
-    edges.reserve(2 * smooth.indices.size());
-    for (size_t t = 0; t < smooth.triangleCount(); ++t)
-        for (size_t k = 0; k < 3; ++k) {
-            const std::uint32_t a = smooth.indices[3 * t + k], b = smooth.indices[3 * t + (k + 1) % 3];
-            const std::uint32_t c = smooth.indices[3 * t + (k + 2) % 3];
-            const Vec3 mid = 0.5 * (position(a) + position(b));
-            EdgeState& edge = edges[edgeKey(a, b)];
-            edge.cut = edge.cut && glm::length(position(b) - position(a)) >= 2.0 * kMinSeparation &&
-                       glm::length(position(c) - mid) >= kMinSeparation;
-            ++edge.triangles;
-        }
-    // Nor where its midpoint would come within kMinSeparation of another
-    // corner of the mesh without being on it: a corner of another group,
-    // where two faces meet or touch, or the midpoint of one of its edges.
-    std::vector<Vec3> near;
-    PointGrid grid(2.0 * kMinSeparation);
-    const auto add = [&](const Vec3& p) {
-        grid.insert(p, int(near.size()));
-        near.push_back(p);
-    };
-    for (size_t v = 0; v < smooth.vertexCount(); ++v)
-        add(position(std::uint32_t(v)));
-    for (size_t t = 0; t < smooth.triangleCount(); ++t)
-        for (size_t k = 0; k < 3; ++k) {
-            const std::uint32_t a = smooth.indices[3 * t + k], b = smooth.indices[3 * t + (k + 1) % 3];
-            EdgeState& edge = edges.at(edgeKey(a, b));
-            if (!edge.cut)
-                continue;
-            const Vec3 mid = 0.5 * (position(a) + position(b));
-            grid.forNearest(mid, [&](int other) {
-                const double d = glm::length(near[size_t(other)] - mid);
-                if (d > 1e-7 && d < kMinSeparation)
-                    edge.cut = false;
-            });
-            if (edge.cut)
-                add(mid);
-        }
+    const std::vector<std::uint32_t>& corner = smooth.indices;
+    const auto next = nextSide;
+    size_t edgeCount = 0;
+    const std::vector<std::uint32_t> edgeOf = edgesOfSides(corner, smooth.vertexCount(), edgeCount);
+    std::vector<std::uint32_t> midpointOf(edgeCount, kMayCut);
+    for (size_t side = 0; side < corner.size(); ++side) {
+        const std::uint32_t a = corner[side], b = corner[next(side)], c = corner[next(next(side))];
+        const Vec3 mid = 0.5 * (position(a) + position(b));
+        if (glm::length(position(b) - position(a)) < 2.0 * kMinSeparation ||
+            glm::length(position(c) - mid) < kMinSeparation)
+            midpointOf[edgeOf[side]] = kUncut;
+    }
+    // For files, nor where its midpoint would come within kMinSeparation of
+    // another corner of the mesh without being on it: a corner of another
+    // group, where two faces meet or touch, or the midpoint of one of its
+    // edges.
+    if (cutFor == CutFor::Files)
+        keepMidpointsApart(smooth, edgeOf, midpointOf);
     LitMesh& mesh = m_geometry;
     mesh = smooth;
     mesh.indices.clear();
@@ -204,13 +255,13 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     mesh.indices.reserve(4 * smooth.indices.size());
     mesh.triangleFace.reserve(4 * smooth.triangleFace.size());
     std::vector<int> faceOf(smooth.vertexCount(), -1);
-    std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
-    midpoints.reserve(smooth.indices.size());
-    const auto midpoint = [&](std::uint32_t a, std::uint32_t b, int face) {
-        const auto [found, added] = midpoints.try_emplace(edgeKey(a, b), std::uint32_t(mesh.positions.size()));
-        if (added) {
+    const auto midpoint = [&](size_t side, int face) {
+        std::uint32_t& vertex = midpointOf[edgeOf[side]];
+        if (vertex == kMayCut) {
             // In doubles and rounded once: a corner on a face's outline stays
             // on the line to a file's float round-off.
+            const std::uint32_t a = corner[side], b = corner[next(side)];
+            vertex = std::uint32_t(mesh.positions.size());
             mesh.positions.push_back(glm::vec3(0.5 * (position(a) + position(b))));
             mesh.normals.push_back(smooth.normals[a]);
             mesh.radiosity.push_back(glm::vec3(0.0f));
@@ -219,7 +270,7 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
             mesh.reflectance.push_back(smooth.reflectance[a]);
             faceOf.push_back(face);
         }
-        return found->second;
+        return vertex;
     };
     const auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, int face) {
         mesh.indices.insert(mesh.indices.end(), {a, b, c});
@@ -227,33 +278,33 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     };
     for (size_t t = 0; t < smooth.triangleCount(); ++t) {
         const int face = smooth.triangleFace[t];
-        std::uint32_t v[3] = {smooth.indices[3 * t], smooth.indices[3 * t + 1], smooth.indices[3 * t + 2]};
-        for (std::uint32_t corner : v)
-            faceOf[corner] = face;
-        bool split[3]; // edge k runs from v[k] to v[k + 1]
+        bool split[3]; // side k runs from corner k to corner k + 1
         int count = 0;
-        for (size_t k = 0; k < 3; ++k)
-            count += (split[k] = edges.at(edgeKey(v[k], v[(k + 1) % 3])).cut) ? 1 : 0;
-        // Turned so that the cut edges come first: edge 0 (one cut), edges 0
-        // and 1 (two).
+        for (size_t k = 0; k < 3; ++k) {
+            faceOf[corner[3 * t + k]] = face;
+            count += (split[k] = midpointOf[edgeOf[3 * t + k]] != kUncut) ? 1 : 0;
+        }
+        // Turned so that the cut sides come first: side 0 (one cut), sides
+        // 0 and 1 (two).
         size_t turn = 0;
         if (count == 1)
             turn = split[0] ? 0 : (split[1] ? 1 : 2);
         else if (count == 2)
             turn = !split[2] ? 0 : (!split[0] ? 1 : 2);
-        const std::uint32_t a = v[turn], b = v[(turn + 1) % 3], c = v[(turn + 2) % 3];
+        const size_t sa = 3 * t + turn, sb = next(sa), sc = next(sb); // the sides from a, b and c
+        const std::uint32_t a = corner[sa], b = corner[sb], c = corner[sc];
         if (count == 0) {
             triangle(a, b, c, face);
         } else if (count == 1) {
-            const std::uint32_t ab = midpoint(a, b, face);
+            const std::uint32_t ab = midpoint(sa, face);
             triangle(a, ab, c, face);
             triangle(ab, b, c, face);
         } else if (count == 2) {
-            // The corner between the cut edges, then the quad left by the
+            // The corner between the cut sides, then the quad left by the
             // shorter diagonal.
-            const std::uint32_t ab = midpoint(a, b, face), bc = midpoint(b, c, face);
+            const std::uint32_t ab = midpoint(sa, face), bc = midpoint(sb, face);
             triangle(ab, b, bc, face);
-            const auto at = [&](std::uint32_t corner) { return Vec3(mesh.positions[corner]); };
+            const auto at = [&](std::uint32_t v) { return Vec3(mesh.positions[v]); };
             if (glm::length(at(bc) - at(a)) <= glm::length(at(c) - at(ab))) {
                 triangle(a, ab, bc, face);
                 triangle(a, bc, c, face);
@@ -262,7 +313,7 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
                 triangle(ab, bc, c, face);
             }
         } else {
-            const std::uint32_t ab = midpoint(a, b, face), bc = midpoint(b, c, face), ca = midpoint(c, a, face);
+            const std::uint32_t ab = midpoint(sa, face), bc = midpoint(sb, face), ca = midpoint(sc, face);
             triangle(a, ab, ca, face);
             triangle(ab, b, bc, face);
             triangle(ca, bc, c, face);
@@ -271,7 +322,7 @@ ExactDirectShading::ExactDirectShading(const PreparedScene& scene, const Smoothi
     }
     // The direct part, exact at every vertex: most of the cut's midpoints
     // are the elements' edges' midpoints.
-    std::vector<size_t> vertexSamples(mesh.vertexCount(), DirectSamples::kNone);
+    std::vector<std::uint32_t> vertexSamples(mesh.vertexCount(), DirectSamples::kNone);
     for (size_t v = 0; v < mesh.vertexCount(); ++v)
         if (faceOf[v] >= 0)
             vertexSamples[v] = samples.add(faceOf[v], Vec3(mesh.positions[v]));

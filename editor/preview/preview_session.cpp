@@ -174,20 +174,22 @@ void PreviewSession::publish(bool running)
         }
         for (const solver::Region& r : prepared.regions)
             frame->regionIds.push_back(r.id);
-        // Smooth vertex radiosity (§6) in every frame, so the view never
-        // switches between two looks: the welding and re-triangulation (about
-        // 5 us an element) are done once per mesh, and a frame only sums each
-        // vertex's elements. The mesh only grows (refinement rounds), so its
-        // element and vertex counts tell when it changed. (The outputs take
-        // the lights' direct part exact, output/exact_direct.h; building that
-        // once per mesh costs several times this, and during refinement
-        // rounds the frames would thin out: not in the preview yet.)
+        // The outputs' picture in every frame, so the view never switches
+        // between two looks: smooth vertex radiosity (§6) with the lights'
+        // direct part exact (output/exact_direct.h), of which the share shot
+        // so far. The welding, re-triangulation and cutting are done once
+        // per mesh, and the direct part once per place: a refinement round
+        // computes it only where it adds corners. A frame then only sums
+        // each vertex's elements. The mesh only grows (refinement rounds),
+        // so its element and vertex counts tell when it changed.
         if (!m_shading || m_shading->elementCount() != prepared.elements.size() ||
             m_shadedVertices != prepared.vertices.size()) {
-            m_shading = std::make_unique<output::SmoothShading>(prepared);
+            m_shading = std::make_unique<output::ExactDirectShading>(prepared, output::SmoothingOptions{},
+                                                                     &m_directCache, output::CutFor::Screen);
             m_shadedVertices = prepared.vertices.size();
         }
-        frame->lit = std::make_shared<output::LitMesh>(m_shading->litMesh(radiosity));
+        frame->lit = std::make_shared<output::LitMesh>(
+            m_shading->litMesh(radiosity, output::directShare(prepared, frame->unshot)));
     } else {
         frame->smooth = false;
         frame->lit = std::make_shared<output::LitMesh>(output::litMeshFromSolution(frame->snapshot));

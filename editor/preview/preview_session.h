@@ -12,8 +12,8 @@
 #include "editor/preview/hemicube_images.h"
 #include "model/diagnostic.h"
 #include "model/scene.h"
+#include "output/exact_direct.h"
 #include "output/lit_mesh.h"
-#include "output/vertex_radiosity.h"
 #include "solver/solver.h"
 
 #include <atomic>
@@ -144,9 +144,11 @@ private:
     std::atomic<bool> m_exited{false};
     std::atomic<bool> m_framePending{false};
     std::chrono::steady_clock::time_point m_lastPublish;
-    // The smooth shading of the solver's current mesh (worker thread only).
-    std::unique_ptr<output::SmoothShading> m_shading;
+    // The shading of the solver's current mesh, and the lights' direct part
+    // at the places of its meshes so far (worker thread only).
+    std::unique_ptr<output::ExactDirectShading> m_shading;
     size_t m_shadedVertices = 0;
+    output::DirectCache m_directCache;
     static inline std::atomic<int> s_live{0};
     std::thread m_thread; // last member: starts after everything above exists
 };

@@ -3,7 +3,10 @@
 // differs from the independent pointwise reference
 // (tests/support/pointwise_reference.h).
 //
-//   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES]]
+//   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES [PICTURE]]]
+//
+// PICTURE is "exact" (the default: what the outputs draw) or "smooth" (the
+// smooth vertex radiosity alone, what the editor's preview draws).
 //
 // solves the scene with its own settings to 0.1 % unshot, cuts every face
 // into square cells (1 cm by default), gathers the reference at each cell's
@@ -94,13 +97,20 @@ double percentile(std::vector<double> v, double q)
 int main(int argc, char** argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES]]\n");
+        std::fprintf(stderr,
+                     "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES "
+                     "[exact|smooth]]]\n");
         return 2;
     }
     const double cellSize = argc > 3 ? std::atof(argv[3]) : 0.01;
     test::PointwiseReferenceOptions referenceOptions;
     if (argc > 4)
         referenceOptions.patchSize = std::atof(argv[4]);
+    const std::string pictureKind = argc > 5 ? argv[5] : "exact";
+    if (pictureKind != "exact" && pictureKind != "smooth") {
+        std::fprintf(stderr, "the picture is \"exact\" or \"smooth\"\n");
+        return 2;
+    }
     if (!(cellSize > 0.0) || !(referenceOptions.patchSize > 0.0)) {
         std::fprintf(stderr, "the cell and patch sizes must be positive numbers of metres\n");
         return 2;
@@ -127,7 +137,9 @@ int main(int argc, char** argv)
     const std::atomic<bool> cancel{false};
     (*built)->run({}, cancel);
     const solver::SolutionSnapshot snapshot = (*built)->snapshot();
-    const output::LitMesh lit = output::litMeshForOutput((*built)->prepared(), snapshot.radiosity, true);
+    const output::LitMesh lit = pictureKind == "exact"
+                                    ? output::litMeshForOutput((*built)->prepared(), snapshot.radiosity, true)
+                                    : output::smoothLitMesh((*built)->prepared(), snapshot.radiosity);
     const glm::vec3 ambient(snapshot.stats.ambient);
     const test::LitMeshProbe probe(lit);
     const output::LitMesh flat = output::litMeshFromSolution((*built)->prepared(), snapshot.radiosity);

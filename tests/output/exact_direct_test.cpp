@@ -184,12 +184,22 @@ TEST(ExactDirect, TrianglesAreCutAtTheirEdgesMidpointsWithoutTVerticesOrLostArea
 TEST(ExactDirect, NoNewCornerComesWithinAMillimetreOfAnother)
 {
     // A file reader that welds corners closer than a millimetre (the
-    // importer does) must find the cut mesh as it finds the smooth one.
-    const PreparedScene prepared = prepare(lampBlockFloor(), 0.05);
+    // importer does) must find the cut mesh as it finds the smooth one. A
+    // strip 2 mm wide (a shelf's edge) is meshed into triangles whose long
+    // sides' midpoints lie 1 mm apart.
+    model::Scene scene = lampBlockFloor();
+    test::addPolygon(scene, "strip", {{-0.5, 0.8, 0.5}, {-0.5, 0.8, 0.502}, {0.5, 0.8, 0.502}, {0.5, 0.8, 0.5}},
+                     "grey");
+    const PreparedScene prepared = prepare(scene, 0.05);
     const std::vector<model::Rgb> values(prepared.elements.size(), model::Rgb(0.2));
     const LitMesh smooth = smoothLitMesh(prepared, values), exact = exactDirectLitMesh(prepared, values);
     EXPECT_GT(exact.vertexCount(), 2 * smooth.vertexCount());
     EXPECT_EQ(closePairs(exact, 1.25e-3), closePairs(smooth, 1.25e-3));
+    // The preview's picture, which no reader sees, is cut without that
+    // search: here that brings corners closer.
+    const LitMesh screen = ExactDirectShading(prepared, {}, nullptr, CutFor::Screen).litMesh(values);
+    EXPECT_GT(screen.vertexCount(), exact.vertexCount());
+    EXPECT_GT(closePairs(screen, 1.25e-3), closePairs(smooth, 1.25e-3));
 }
 
 TEST(ExactDirect, TheDirectShareIsWhatTheLightsHaveShotOfTheirEmission)

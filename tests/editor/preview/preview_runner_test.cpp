@@ -15,6 +15,7 @@
 #include "editor/preview/solver_presets.h"
 #include "editor/viewport/viewport.h"
 #include "model/io/scene_json.h"
+#include "output/exact_direct.h"
 #include "preview_scenes.h"
 #include "support/command_run.h"
 #include "support/editor_documents.h"
@@ -190,6 +191,42 @@ private slots:
         QVERIFY(allSmooth);
         QTRY_VERIFY(runner.frame() && !runner.frame()->running);
         QVERIFY(runner.frame()->smooth);
+    }
+
+    void theFinalFrameIsThePictureTheOutputsDraw()
+    {
+        // The preview shows what the exports and regio-solve --image draw:
+        // smooth vertex radiosity with the lights' direct part exact, on
+        // triangles cut at their edges' midpoints. Without adaptive
+        // subdivision the preview's mesh is the one a fresh preparation
+        // makes, so the picture can be made again here.
+        model::Scene scene = test::loadSample("cornell-box");
+        scene.solver.adaptive.enabled = false;
+        PreviewRunner runner;
+        runner.start(scene);
+        QVERIFY(waitForFinal(runner));
+        const std::shared_ptr<const PreviewFrame> frame = runner.frame();
+        QVERIFY(frame && frame->smooth && frame->lit);
+        auto solver = solver::Solver::create(scene);
+        QVERIFY(solver.ok());
+        const solver::PreparedScene& prepared = (*solver)->prepared();
+        QCOMPARE(prepared.elements.size(), frame->snapshot.radiosity.size());
+        const double share = output::directShare(prepared, frame->unshot);
+        QVERIFY(share > 0.999); // the light has shot all it emits
+        const output::LitMesh expected = output::ExactDirectShading(prepared, {}, nullptr, output::CutFor::Screen)
+                                             .litMesh(frame->snapshot.radiosity, share);
+        const output::LitMesh smooth = output::smoothLitMesh(prepared, frame->snapshot.radiosity);
+        QVERIFY(expected.vertexCount() > smooth.vertexCount()); // the cut's midpoints
+        QCOMPARE(frame->lit->vertexCount(), expected.vertexCount());
+        QCOMPARE(frame->lit->indices, expected.indices);
+        float largest = 0.0f;
+        for (size_t v = 0; v < expected.vertexCount(); ++v) {
+            largest = std::max(largest, glm::length(expected.radiosity[v]));
+            QVERIFY2(glm::length(frame->lit->radiosity[v] - expected.radiosity[v]) <=
+                         1e-6f * glm::length(expected.radiosity[v]) + 1e-9f,
+                     qPrintable(QStringLiteral("vertex %1").arg(v)));
+        }
+        QVERIFY(largest > 0.0f);
     }
 
     void pauseHoldsTheSolveAndResumeContinuesIt()
