@@ -1,6 +1,6 @@
 #pragma once
 // The smooth lit mesh with the lights' direct part exact at every vertex:
-// the picture that the outputs draw by default.
+// the picture that the outputs and the editor's preview draw.
 //
 // Across a penumbra the direct light bends sharply; vertex radiosity
 // averaged from the elements (§6) rounds the bend off and carries light a
@@ -9,15 +9,18 @@
 // varies slowly) is smoothed as before (SmoothShading), the direct part is
 // taken exact at the vertices (solver/picture/direct_light.h), and every
 // triangle is cut into four at its edges' midpoints, so that a straight line
-// between two vertices spans half an element. An element's direct part is
-// the mean of the exact values at its edges' midpoints (exact for a
-// quadratic), which keeps the elements' means where the light is smooth.
+// between two vertices spans half an element, and again where the direct
+// part still bends between two corners (output/midpoint_cut.h). An
+// element's direct part is the mean of the exact values at its edges'
+// midpoints (exact for a quadratic), which keeps the elements' means where
+// the light is smooth.
 //
 // On the Cornell box (docs/accuracy.md) no point of the floor is then more
 // than 5 % brighter than the reference, where five were with vertex
 // radiosity alone (and six with exact direct values at the vertices but
 // triangles an element wide).
 #include "output/lit_mesh.h"
+#include "output/midpoint_cut.h"
 #include "output/vertex_radiosity.h"
 
 #include <cstdint>
@@ -43,12 +46,6 @@ private:
     struct Places;
     std::unique_ptr<Places> m_places;
 };
-
-// Where a picture goes. A model file's reader may weld corners closer than
-// a millimetre (the importer does), which would fold the triangles between
-// them: for files, a new corner is kept 1.25 mm from every other (a search
-// that costs a quarter of a cached build); the screen needs no search.
-enum class CutFor { Files, Screen };
 
 // Built once per mesh, as SmoothShading (the editor's preview shades every
 // frame of a solve with it): the lights' direct part at every vertex and
