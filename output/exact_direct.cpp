@@ -62,7 +62,6 @@ public:
         return index;
     }
 
-    size_t size() const { return m_points.size(); }
     const Rgb& value(std::uint32_t place) const { return m_values[place]; }
 
     // The values at the places added since the last call: from `known`,

@@ -276,18 +276,17 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
             glm::length(position(c) - mid) < kMinSeparation)
             s |= kForbidden;
     }
-    constexpr std::uint32_t kUncut = ~std::uint32_t(0), kToCut = kUncut - 1;
-    std::vector<std::uint32_t> midpointOf(edgeCount, kUncut); // or kToCut
+    std::vector<char> toCut(edgeCount, 0);
     for (size_t side = 0; side < corner.size(); ++side) {
         const std::uint32_t edge = edgeOf[side];
-        if (state[edge] != kWanted || midpointOf[edge] != kUncut)
+        if (state[edge] != kWanted || toCut[edge])
             continue;
         const Vec3 mid = 0.5 * (position(corner[side]) + position(corner[nextSide(side)]));
         if (m_apart && m_apart->crowded(mid)) {
             state[edge] |= kForbidden;
             continue;
         }
-        midpointOf[edge] = kToCut;
+        toCut[edge] = 1;
         if (m_apart)
             m_apart->add(mid);
     }
@@ -303,8 +302,8 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
     for (bool changed = m_apart != nullptr && m_rounds > 0; changed;) {
         changed = false;
         for (size_t t = 0; t < triangleFace.size(); ++t) {
-            const bool split[3] = {midpointOf[edgeOf[3 * t]] == kToCut, midpointOf[edgeOf[3 * t + 1]] == kToCut,
-                                   midpointOf[edgeOf[3 * t + 2]] == kToCut};
+            const bool split[3] = {toCut[edgeOf[3 * t]] != 0, toCut[edgeOf[3 * t + 1]] != 0,
+                                   toCut[edgeOf[3 * t + 2]] != 0};
             if (!split[0] && !split[1] && !split[2])
                 continue;
             const Vec3 p[3] = {position(corner[3 * t]), position(corner[3 * t + 1]), position(corner[3 * t + 2])};
@@ -321,7 +320,7 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
                 }
             for (size_t k = 0; k < 3; ++k)
                 if (split[k] && !(keep > 0 && (keep >> k) & 1)) {
-                    midpointOf[edgeOf[3 * t + k]] = kUncut;
+                    toCut[edgeOf[3 * t + k]] = 0;
                     changed = true;
                 }
         }
@@ -331,13 +330,14 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
     // corners (as the smooth shading values each copy by its own element).
     size_t ownEdges = 0;
     const std::vector<std::uint32_t> ownEdgeOf = edgesOfSides(corner, m_mesh.vertexCount(), ownEdges);
-    std::vector<std::uint32_t> vertexOf(ownEdges, kUncut);
+    constexpr std::uint32_t kNone = ~std::uint32_t(0);
+    std::vector<std::uint32_t> vertexOf(ownEdges, kNone);
     const size_t before = m_mesh.vertexCount();
     m_mesh.indices.reserve(m_mesh.indices.size() + 4 * corner.size());
     m_mesh.triangleFace.reserve(m_mesh.triangleFace.size() + 4 * triangleFace.size());
     const auto midpoint = [&](size_t side, int face) {
         std::uint32_t& vertex = vertexOf[ownEdgeOf[side]];
-        if (vertex == kUncut) {
+        if (vertex == kNone) {
             const std::uint32_t a = corner[side], b = corner[nextSide(side)];
             vertex = std::uint32_t(m_mesh.positions.size());
             m_exact.push_back(0.5 * (position(a) + position(b)));
@@ -359,7 +359,7 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
         const int face = triangleFace[t];
         bool split[3]; // side k runs from corner k to corner k + 1
         for (size_t k = 0; k < 3; ++k)
-            split[k] = midpointOf[edgeOf[3 * t + k]] != kUncut;
+            split[k] = toCut[edgeOf[3 * t + k]] != 0;
         const Vec3 p[3] = {position(corner[3 * t]), position(corner[3 * t + 1]), position(corner[3 * t + 2])};
         Vec3 points[6];
         bool fromA = true;
@@ -371,7 +371,7 @@ size_t MidpointCut::cut(const std::function<bool(std::uint32_t, std::uint32_t)>&
         for (size_t k = 0; k < 3; ++k) {
             const size_t side = 3 * t + (turn + k) % 3;
             vertex[k] = corner[side];
-            vertex[3 + k] = split[(turn + k) % 3] ? midpoint(side, face) : kUncut;
+            vertex[3 + k] = split[(turn + k) % 3] ? midpoint(side, face) : kNone;
         }
         for (int i = 0; i < pieces.count; ++i)
             triangle(vertex[pieces.corners[i][0]], vertex[pieces.corners[i][1]], vertex[pieces.corners[i][2]], face);
