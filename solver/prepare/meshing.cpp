@@ -5,6 +5,7 @@
 #include "solver/prepare/conforming_strips.h"
 #include "solver/prepare/covered_parts.h"
 #include "solver/prepare/facing_faces.h"
+#include "solver/prepare/near_outlines.h"
 
 #include <glm/geometric.hpp>
 
@@ -151,7 +152,10 @@ void meshFaces(PreparedScene& scene)
     // mesh is conforming. Only what no solid covers is meshed
     // (solver/prepare/covered_parts.h), as one conforming mesh of its pieces.
     scene.shadowCorners.clear();
-    const std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene, &scene.shadowCorners);
+    std::vector<std::vector<std::vector<Vec3>>> uncovered = uncoveredPieces(scene, &scene.shadowCorners);
+    // A face hanging just in front of another (a lamp under the ceiling) cuts
+    // it along its outline (solver/prepare/near_outlines.h).
+    cutAlongNearOutlines(scene, uncovered);
     // Faces that stand in front of each other across a gap of a few patches
     // take their light from each other by the contour formula farther out
     // (solver/shooting/near_field.h).

@@ -1,5 +1,6 @@
 #include "solver/shooting/adaptive_refinement.h"
 
+#include "solver/prepare/near_outlines.h"
 #include "solver/shooting/contact_lines.h"
 #include "solver/shooting/penumbrae.h"
 
@@ -40,8 +41,13 @@ int AdaptiveRefinement::splitBeforeFirstShot()
         return 0;
     const std::vector<std::vector<int>> contacts =
         m_policy.contactPasses > 0 ? contactFaces(m_hierarchy) : std::vector<std::vector<int>>{};
+    const std::vector<std::vector<std::vector<Vec3>>> outlines =
+        m_policy.outlinePasses > 0 ? nearOutlines(m_hierarchy) : std::vector<std::vector<std::vector<Vec3>>>{};
     const std::vector<Penumbra> bands = m_policy.penumbraPasses > 0 ? penumbrae(m_hierarchy) : std::vector<Penumbra>{};
-    if (bands.empty() && std::all_of(contacts.begin(), contacts.end(), [](const auto& faces) { return faces.empty(); }))
+    const auto none = [](const auto& perFace) {
+        return std::all_of(perFace.begin(), perFace.end(), [](const auto& lines) { return lines.empty(); });
+    };
+    if (bands.empty() && none(contacts) && none(outlines))
         return 0;
     // Before the first shot every element holds its emission, radiosity and
     // unshot alike (as Shooting starts).
@@ -54,6 +60,12 @@ int AdaptiveRefinement::splitBeforeFirstShot()
     int contactSplits = 0;
     for (int pass = 0; pass < m_policy.contactPasses && !contacts.empty(); ++pass) {
         const int done = m_mesh->subdivide(elementsOnContactLines(*m_mesh, contacts), m_settings.minEdge);
+        if (done == 0)
+            break;
+        contactSplits += done;
+    }
+    for (int pass = 0; pass < m_policy.outlinePasses && !none(outlines); ++pass) {
+        const int done = m_mesh->subdivide(elementsOnNearOutlines(*m_mesh, outlines), m_settings.minEdge);
         if (done == 0)
             break;
         contactSplits += done;

@@ -36,7 +36,11 @@
 //     would add more than `penumbraShare` of the growth budget: on the
 //     Cornell box they take a fifth of it; on a hall of a hundred objects
 //     under large lamps they take the whole share, and without it they
-//     would quadruple the mesh before the first shot.
+//     would quadruple the mesh before the first shot. And so are the
+//     elements along the outline of a face hanging just in front of another
+//     (a lamp 2 cm under the ceiling: solver/prepare/near_outlines.h),
+//     `outlinePasses` times: the light that bounces in the gap falls off
+//     across the outline within a few gap widths.
 //
 // New elements take their parent's values through AdaptiveMesh (radiosity
 // interpolated from the parent and its neighbours, mean-preserving; unshot
@@ -62,6 +66,7 @@ struct RefinementPolicy {
     int sliceSize = 64;           // candidates split between two looks at the cancel flag
     int selectSliceSize = 2048;   // elements judged by the criterion between two looks
     int contactPasses = 2;        // splits of the elements along contact lines before the first shot
+    int outlinePasses = 3;        // splits of the elements along near outlines before the first shot
     int penumbraPasses = 2;       // splits of the elements in the solids' penumbrae before the first shot
     double penumbraMinEdge = 0.5; // x minEdge: the edges the penumbra splits go down to
     double penumbraShare = 0.25;  // of the growth budget (growthLimit - 1) x initial, at most

@@ -2,6 +2,7 @@
 
 #include "solver/prepare/covered_parts.h"
 #include "solver/prepare/face_polygon.h"
+#include "solver/prepare/near_outlines.h"
 #include "solver/prepare/shadow_lines.h"
 
 #include <algorithm>
@@ -20,6 +21,27 @@ bool liesOn(const PreparedScene& scene, int face, const Vec3& point)
     if (std::abs(plane.signedDistance(point)) > model::kDistanceEpsilon)
         return false;
     return insideConvex(scene.faces[size_t(face)].polygon, plane.normal, point);
+}
+
+// The active elements of the faces f with lines[f] (not empty) that have a
+// corner for which on(f, corner) holds, ascending.
+template <typename Lines, typename On>
+std::vector<int> elementsWithACornerOn(const AdaptiveMesh& mesh, const std::vector<Lines>& lines, On&& on)
+{
+    const PreparedScene& scene = mesh.scene();
+    std::vector<int> found;
+    for (size_t f = 0; f < scene.faces.size() && f < lines.size(); ++f) {
+        if (lines[f].empty())
+            continue;
+        for (int e : scene.faces[f].elements) {
+            const auto& v = scene.elements[size_t(e)].vertices;
+            if (mesh.isActive(e) &&
+                std::any_of(v.begin(), v.end(), [&](int corner) { return on(f, scene.vertices[size_t(corner)]); }))
+                found.push_back(e);
+        }
+    }
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 } // namespace
@@ -62,29 +84,20 @@ std::vector<std::vector<int>> contactFaces(const PreparedScene& scene)
 std::vector<int> elementsOnContactLines(const AdaptiveMesh& mesh, const std::vector<std::vector<int>>& contacts)
 {
     const PreparedScene& scene = mesh.scene();
-    std::vector<int> found;
-    for (size_t f = 0; f < scene.faces.size() && f < contacts.size(); ++f) {
-        if (contacts[f].empty())
-            continue;
-        for (int e : scene.faces[f].elements) {
-            if (!mesh.isActive(e))
-                continue;
-            const auto& v = scene.elements[size_t(e)].vertices;
-            // A corner on the line is enough: of the two triangles of a
-            // quad along the line one has an edge on it and the other only
-            // a corner, and left whole the second carried the light of its
-            // far corners to the foot (the short block's side 1 cm above
-            // the floor read +8 %, docs/accuracy.md).
-            const bool touches = std::any_of(v.begin(), v.end(), [&](int corner) {
-                return std::any_of(contacts[f].begin(), contacts[f].end(),
-                                   [&](int s) { return liesOn(scene, s, scene.vertices[size_t(corner)]); });
-            });
-            if (touches)
-                found.push_back(e);
-        }
-    }
-    std::sort(found.begin(), found.end());
-    return found;
+    // A corner on the line is enough: of the two triangles of a quad along
+    // the line one has an edge on it and the other only a corner, and left
+    // whole the second carried the light of its far corners to the foot (the
+    // short block's side 1 cm above the floor read +8 %, docs/accuracy.md).
+    return elementsWithACornerOn(mesh, contacts, [&](size_t f, const Vec3& corner) {
+        return std::any_of(contacts[f].begin(), contacts[f].end(), [&](int s) { return liesOn(scene, s, corner); });
+    });
+}
+
+std::vector<int> elementsOnNearOutlines(const AdaptiveMesh& mesh,
+                                        const std::vector<std::vector<std::vector<Vec3>>>& outlines)
+{
+    return elementsWithACornerOn(mesh, outlines,
+                                 [&](size_t f, const Vec3& corner) { return liesOnOutline(outlines[f], corner); });
 }
 
 } // namespace regio::solver

@@ -36,4 +36,15 @@ std::vector<std::vector<int>> contactFaces(const PreparedScene& scene);
 // grew from. Ascending.
 std::vector<int> elementsOnContactLines(const AdaptiveMesh& mesh, const std::vector<std::vector<int>>& contacts);
 
+// The active elements of `mesh` with a corner on an edge of one of their
+// face's near outlines (solver/prepare/near_outlines.h: a lamp hanging 2 cm
+// under the ceiling, whose outline the ceiling is cut along). The light that
+// bounces in the gap falls off across the outline within a few gap widths,
+// inside and out, as steeply as at a contact line, and the criterion sees
+// it no better: the elements on both sides are split before the first shot
+// too. `outlines` is nearOutlines() of the scene the mesh grew from.
+// Ascending.
+std::vector<int> elementsOnNearOutlines(const AdaptiveMesh& mesh,
+                                        const std::vector<std::vector<std::vector<Vec3>>>& outlines);
+
 } // namespace regio::solver

@@ -5,6 +5,10 @@
 //
 //   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES [PICTURE]]]
 //
+// SCENE.json may also be "furnished-room": the small furnished room of
+// docs/accuracy.md, generated (tests/support/furnished_room.h, seed 1, six
+// objects in a room of 5 x 2.5 x 4 m, its lamps 2 cm under the ceiling) with
+// a camera in a corner.
 // PICTURE is "exact" (the default: what the outputs draw) or "smooth" (the
 // smooth vertex radiosity alone, what the editor's preview draws).
 //
@@ -26,6 +30,7 @@
 #include "output/software_render.h"
 #include "output/vertex_radiosity.h"
 #include "solver/solver.h"
+#include "support/furnished_room.h"
 #include "support/lit_mesh_sampling.h"
 #include "support/pointwise_reference.h"
 
@@ -92,6 +97,14 @@ double percentile(std::vector<double> v, double q)
     return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
 }
 
+// The small furnished room, seen from a corner under the ceiling.
+model::Result<model::Scene> furnishedRoomWithCamera()
+{
+    model::Scene room = test::furnishedRoom(1, 6, {5.0, 2.5, 4.0});
+    room.camera = model::Camera{{0.3, 2.2, 0.3}, {3.6, 0.8, 3.0}, {0.0, 1.0, 0.0}, 75.0};
+    return room;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -115,7 +128,8 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "the cell and patch sizes must be positive numbers of metres\n");
         return 2;
     }
-    model::Result<model::Scene> loaded = model::loadSceneFile(argv[1]);
+    model::Result<model::Scene> loaded =
+        std::string(argv[1]) == "furnished-room" ? furnishedRoomWithCamera() : model::loadSceneFile(argv[1]);
     if (!loaded.ok()) {
         std::fprintf(stderr, "cannot read %s\n", argv[1]);
         return 1;

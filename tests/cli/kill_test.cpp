@@ -100,11 +100,17 @@ TEST(NothingLost, ABatchKilledAtRandomMomentsLeavesOnlyWholeFilesAndTheRerunFini
                                   "--adaptive",  "off",    "--force"};
     args.insert(args.end(), scenes.begin(), scenes.end());
 
-    // How long an uninterrupted run takes, to spread the kills over it.
-    const auto start = std::chrono::steady_clock::now();
-    const CommandRun whole = runRegioSolve(args);
-    ASSERT_EQ(whole.exitCode, 0) << whole.err;
-    const auto span = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
+    // How long an uninterrupted run takes, to spread the kills over it: the
+    // shortest of three, since a run timed while the machine was busy with
+    // other tests would spread them past the end of the quicker runs after.
+    auto span = std::chrono::microseconds::max();
+    for (int run = 0; run < 3; ++run) {
+        const auto start = std::chrono::steady_clock::now();
+        const CommandRun whole = runRegioSolve(args);
+        ASSERT_EQ(whole.exitCode, 0) << whole.err;
+        span = std::min(
+            span, std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start));
+    }
 
     std::mt19937 random(20261202);
     int killed = 0;
