@@ -68,6 +68,11 @@ TEST(NearOutlines, ACeilingIsCutAlongTheOutlineOfALampHangingJustUnderIt)
     // the lamp were not there, and patches do straddle the outline.
     const PreparedScene far = test::prepared(roomWithLampUnderCeiling(0.3));
     EXPECT_GT(patchesAcrossTheOutline(far, "room.body.py"), 0);
+    // A panel that does not glow leaves the gap dark: no cut either.
+    model::Scene dark = roomWithLampUnderCeiling(0.02);
+    dark.objects.back().parts.front().material = "wall";
+    const PreparedScene unlit = test::prepared(dark);
+    EXPECT_GT(patchesAcrossTheOutline(unlit, "room.body.py"), 0);
 }
 
 TEST(NearOutlines, OnlyTheCeilingIsCutAndOnlyAlongTheLampsTop)
@@ -138,4 +143,21 @@ TEST(NearOutlines, TheElementsAlongTheOutlineAreSplitBeforeTheFirstShotOnBothSid
     policy.contactPasses = 0;
     AdaptiveRefinement unsplit(s, scene.solver.adaptive, policy);
     EXPECT_EQ(unsplit.splitBeforeFirstShot(), 0);
+}
+
+TEST(NearOutlines, AFaceWithMoreThanEightHangingInFrontOfItIsLeftWhole)
+{
+    // Nine panels 0.3 m square, 2 cm under the ceiling: their lines would
+    // run across the whole ceiling. Eight are cut along; the ninth leaves
+    // the ceiling whole, as many solids on a floor draw no shadow lines.
+    for (const int panels : {8, 9}) {
+        model::Scene scene = roomWithLampUnderCeiling(0.3);
+        for (int i = 0; i < panels; ++i) {
+            const double x = 0.3 + 0.9 * (i % 3), z = 0.3 + 0.9 * (i / 3);
+            test::addBox(scene, "panel" + std::to_string(i), {x, 2.44, z}, {x + 0.3, 2.48, z + 0.3}, "lamp");
+        }
+        const PreparedScene s = test::prepared(scene);
+        const std::vector<std::vector<std::vector<Vec3>>> outlines = nearOutlines(s);
+        EXPECT_EQ(outlines[test::faceNamed(s, "room.body.py")].size(), panels == 8 ? 8u : 0u) << panels;
+    }
 }
