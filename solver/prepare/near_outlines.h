@@ -11,7 +11,10 @@
 // inside, on the furnished room's ceiling around each lamp (docs/accuracy.md).
 // With the outline among the pieces' edges (solver/prepare/covered_parts.h)
 // the elements lie on one side or the other, as a discontinuity mesh would
-// place them (Heckbert 1992; Lischinski, Tampieri and Greenberg 1992).
+// place them (Heckbert 1992; Lischinski, Tampieri and Greenberg 1992), and
+// the refinement splits those along it before the first shot
+// (solver/shooting/adaptive_refinement.h): the cut alone left 25 cm
+// elements on either side, and the ring as it was.
 #include "solver/prepare/prepared_scene.h"
 
 #include <vector>
@@ -26,11 +29,11 @@ inline constexpr double kNearOutlineGapPatches = 0.1;
 // For every face, the outlines of the faces that hang in front of it within
 // kNearOutlineGapPatches patch sizes, parallel to it within 5 degrees and
 // facing it, where one of the two emits, dropped onto its plane, where they
-// cross it. A face narrower than
-// ShadowLineLimits::solidMinWidth patches has none (a board's edge would
-// only cut slivers, as a narrow solid draws no shadow lines), and a face
-// with more than eight faces in front of it none at all: the lines run
-// across the whole face and would cut it into slivers.
+// cross it. A face narrower than ShadowLineLimits::solidMinWidth patches
+// draws none (a board's edge would only cut slivers, as a narrow solid
+// draws no shadow lines), and a face with more than eight faces in front of
+// it takes none at all: the lines run across the whole face and would cut
+// it into slivers.
 std::vector<std::vector<std::vector<Vec3>>> nearOutlines(const PreparedScene& scene);
 
 // Cuts `pieces` (the convex pieces of every face, as meshFaces meshes them)
@@ -39,8 +42,8 @@ std::vector<std::vector<std::vector<Vec3>>> nearOutlines(const PreparedScene& sc
 // corner).
 void cutAlongNearOutlines(const PreparedScene& scene, std::vector<std::vector<std::vector<Vec3>>>& pieces);
 
-// The point of face `face`'s plane lies on one of the outlines' edges
-// (within model::kDistanceEpsilon).
+// The point, in the plane the outlines were dropped onto, lies on one of
+// their edges (within model::kDistanceEpsilon).
 bool liesOnOutline(const std::vector<std::vector<Vec3>>& outlines, const Vec3& point);
 
 } // namespace regio::solver
