@@ -6,6 +6,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace regio::solver {
@@ -86,6 +89,41 @@ inline bool insideConvex(const std::vector<model::Vec3>& polygon, const model::V
             return false;
     }
     return true;
+}
+
+// The stretch [t0, t1] of the segment origin + t direction, 0 <= t <= length
+// (direction of unit length), that lies inside a convex polygon,
+// counter-clockwise around `normal`; t1 <= t0 when none does. A segment
+// running along an edge counts as inside.
+inline std::pair<double, double> segmentInsideConvex(const std::vector<model::Vec3>& polygon, const model::Vec3& normal,
+                                                     const model::Vec3& origin, const model::Vec3& direction,
+                                                     double length)
+{
+    double t0 = 0.0, t1 = length;
+    const size_t n = polygon.size();
+    for (size_t i = 0; i < n && t0 < t1; ++i) {
+        const model::Vec3& a = polygon[i];
+        const model::Vec3 inward = glm::cross(normal, polygon[(i + 1) % n] - a);
+        const double at = glm::dot(inward, origin - a), rate = glm::dot(inward, direction);
+        if (std::abs(rate) < 1e-15) {
+            if (at < 0.0)
+                t1 = t0;
+        } else if (rate > 0.0) {
+            t0 = std::max(t0, -at / rate);
+        } else {
+            t1 = std::min(t1, -at / rate);
+        }
+    }
+    return {t0, t1};
+}
+
+// The distance from a point to the segment ab.
+inline double pointSegmentDistance(const model::Vec3& p, const model::Vec3& a, const model::Vec3& b)
+{
+    const model::Vec3 ab = b - a;
+    const double length2 = glm::dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + ab * t));
 }
 
 } // namespace regio::solver

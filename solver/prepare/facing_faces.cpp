@@ -1,6 +1,7 @@
 #include "solver/prepare/facing_faces.h"
 
 #include "model/geometry/geometry.h"
+#include "solver/prepare/face_polygon.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,14 +13,6 @@
 namespace regio::solver {
 
 namespace {
-
-double pointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-    const Vec3 ab = b - a;
-    const double length2 = glm::dot(ab, ab);
-    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + ab * t));
-}
 
 // Closest points of two segments (Ericson, Real-Time Collision Detection §5.1.9).
 double segmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2)

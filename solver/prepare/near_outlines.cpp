@@ -1,5 +1,6 @@
 #include "solver/prepare/near_outlines.h"
 
+#include "solver/prepare/face_polygon.h"
 #include "solver/prepare/facing_faces.h"
 #include "solver/prepare/shadow_lines.h"
 
@@ -17,33 +18,15 @@ constexpr double kParallelCosine = -0.996; // normals within 5 degrees of opposi
 // A face with more faces hanging in front of it is left as it is.
 constexpr size_t kMostOutlines = 8;
 
-double pointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-    const Vec3 ab = b - a;
-    const double length2 = glm::dot(ab, ab);
-    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + ab * t));
-}
-
 // How long a stretch of the segment ab lies inside the convex polygon
 // (normal `normal`).
 double lengthInside(const std::vector<Vec3>& polygon, const Vec3& normal, const Vec3& a, const Vec3& b)
 {
-    double t0 = 0.0, t1 = 1.0;
-    const size_t n = polygon.size();
-    for (size_t i = 0; i < n && t0 < t1; ++i) {
-        const Vec3 inward = glm::cross(normal, polygon[(i + 1) % n] - polygon[i]);
-        const double at = glm::dot(inward, a - polygon[i]), rate = glm::dot(inward, b - a);
-        if (std::abs(rate) < 1e-15) {
-            if (at <= 0.0)
-                t1 = t0;
-        } else if (rate > 0.0) {
-            t0 = std::max(t0, -at / rate);
-        } else {
-            t1 = std::min(t1, -at / rate);
-        }
-    }
-    return t1 > t0 ? (t1 - t0) * glm::length(b - a) : 0.0;
+    const double length = glm::length(b - a);
+    if (length <= 0.0)
+        return 0.0;
+    const auto [t0, t1] = segmentInsideConvex(polygon, normal, a, (b - a) / length, length);
+    return std::max(0.0, t1 - t0);
 }
 
 } // namespace

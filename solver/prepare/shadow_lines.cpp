@@ -206,21 +206,7 @@ void cutAlong(std::vector<std::vector<Vec3>>& pieces, const ShadowLine& line, co
             above = std::max(above, s);
         }
         // ... and the segment through the inside for at least minWidth.
-        double t0 = 0.0, t1 = line.length;
-        const size_t n = piece.size();
-        for (size_t i = 0; i < n && t0 < t1; ++i) {
-            const Vec3& a = piece[i];
-            const Vec3 inward = glm::cross(normal, piece[(i + 1) % n] - a);
-            const double at = glm::dot(inward, line.origin - a), rate = glm::dot(inward, line.direction);
-            if (std::abs(rate) < 1e-15) {
-                if (at < 0.0)
-                    t1 = t0;
-            } else if (rate > 0.0) {
-                t0 = std::max(t0, -at / rate);
-            } else {
-                t1 = std::min(t1, -at / rate);
-            }
-        }
+        const auto [t0, t1] = segmentInsideConvex(piece, normal, line.origin, line.direction, line.length);
         if (above < minWidth || -below < minWidth || t1 - t0 < minWidth) {
             out.push_back(std::move(piece));
             continue;
