@@ -304,8 +304,10 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
     }
     if (candidates.empty())
         return;
-    // Chunks of candidates: each computes its receivers' terms into its own list.
-    constexpr size_t kChunk = 64;
+    // Chunks of candidates: each computes its receivers' terms into its own
+    // list. Small, so that the threads share a shooter's few dozen near
+    // receivers evenly.
+    constexpr size_t kChunk = 4;
     const size_t chunks = (candidates.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<NearTerm>> terms(chunks);
     const ShooterMesh mesh(scene, patch);

@@ -97,6 +97,7 @@ void Shooting::dropRows()
 {
     m_rows.assign(m_scene.patches.size(), FormFactorRow{});
     m_kept.assign(m_scene.patches.size(), 0);
+    m_arena.reset();
     m_cacheBytes = 0;
     m_lastRow = nullptr;
 }
@@ -112,7 +113,6 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     ItemBuffer& buffer = light ? *m_lightBuffer : m_buffer;
     const Hemicube& hemicube = light ? m_lightHemicube : m_hemicube;
     const size_t elements = m_scene.elements.size();
-    m_perItem.assign(elements + kFirstElementItem, 0.0);
     // A patch in a narrow gap sees the scene from several points
     // (gap_shooters.h): each point's factors are kept apart, the row's
     // receivers and near terms come from their mean.
@@ -120,16 +120,16 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     if (points.size() == 1) {
         if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
             return nullptr;
-        buffer.accumulate(hemicube, m_perItem);
+        accumulate(renderer, buffer, hemicube, m_perItem);
     } else {
         const Vec3& normal = m_scene.properties[static_cast<size_t>(m_scene.patches[p].properties)].plane.normal;
         m_perPointItems.resize(points.size());
         for (size_t q = 0; q < points.size(); ++q) {
             if (!renderer.render(shooterFrameAt(points[q], normal), buffer, cancel))
                 return nullptr;
-            m_perPointItems[q].assign(elements + kFirstElementItem, 0.0);
-            buffer.accumulate(hemicube, m_perPointItems[q]);
+            accumulate(renderer, buffer, hemicube, m_perPointItems[q]);
         }
+        m_perItem.assign(elements + kFirstElementItem, 0.0);
         const double share = 1.0 / static_cast<double>(points.size());
         for (const std::vector<double>& items : m_perPointItems)
             for (size_t i = 0; i < m_perItem.size(); ++i)
@@ -137,43 +137,63 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     }
     ++m_renderedShots;
 
-    FormFactorRow& row = m_scratch;
-    row.elements.clear();
-    row.factors.clear();
-    row.near.clear();
-    row.farScale.clear();
-    row.points = static_cast<int>(points.size());
-    row.pointFactors.clear();
+    RowStorage& built = m_built;
+    built.elements.clear();
+    built.factors.clear();
+    built.near.clear();
+    built.farScale.clear();
+    built.pointFactors.clear();
     for (size_t j = 0; j < elements; ++j)
         if (const double f = m_perItem[j + kFirstElementItem]; f != 0.0) {
-            row.elements.push_back(static_cast<std::uint32_t>(j));
-            row.factors.push_back(f);
+            built.elements.push_back(static_cast<std::uint32_t>(j));
+            built.factors.push_back(f);
         }
     correctNearField(
-        m_scene, shooter, row.elements, row.factors, row.near, row.farScale,
+        m_scene, shooter, built.elements, built.factors, built.near, built.farScale,
         [this](size_t count, const std::function<void(size_t, size_t)>& body) { m_renderer.parallelFor(count, body); });
     if (points.size() > 1)
-        splitFarShareByPoints(m_scene, shooter, points, m_perPointItems, row.elements, row.near, row.pointFactors,
-                              row.farScale);
+        splitFarShareByPoints(m_scene, shooter, points, m_perPointItems, built.elements, built.near, built.pointFactors,
+                              built.farScale);
+    FormFactorRow row;
+    row.elements = built.elements;
+    row.factors = built.factors;
+    row.near = built.near;
+    row.farScale = built.farScale;
+    row.points = static_cast<int>(points.size());
+    row.pointFactors = built.pointFactors;
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
-    std::size_t exact = row.elements.size() * (sizeof(std::uint32_t) + sizeof(double)) +
-                        row.near.size() * sizeof(NearTerm) + row.farScale.size() * sizeof(double);
-    exact += row.pointFactors.size() * sizeof(double);
-    if (m_cacheBudget == 0 || m_cacheBytes + exact > m_cacheBudget)
-        return &row;
+    const std::size_t bytes = row.bytes();
+    if (m_cacheBudget == 0 || m_cacheBytes + bytes > m_cacheBudget) {
+        m_unkept = row;
+        return &m_unkept;
+    }
     FormFactorRow& kept = m_rows[p];
-    kept.elements.assign(row.elements.begin(), row.elements.end()); // exact capacity
-    kept.factors.assign(row.factors.begin(), row.factors.end());
-    kept.near.assign(row.near.begin(), row.near.end());
-    kept.farScale.assign(row.farScale.begin(), row.farScale.end());
-    kept.points = row.points;
-    kept.pointFactors.assign(row.pointFactors.begin(), row.pointFactors.end());
-    kept.escaped = row.escaped;
-    kept.blocked = row.blocked;
-    m_cacheBytes += kept.bytes();
+    kept = row;
+    kept.elements = m_arena.keep(row.elements);
+    kept.factors = m_arena.keep(row.factors);
+    kept.near = m_arena.keep(row.near);
+    kept.farScale = m_arena.keep(row.farScale);
+    kept.pointFactors = m_arena.keep(row.pointFactors);
+    m_cacheBytes += bytes;
     m_kept[p] = 1;
     return &kept;
+}
+
+void Shooting::accumulate(HemicubeRenderer& renderer, const ItemBuffer& buffer, const Hemicube& hemicube,
+                          std::vector<double>& out)
+{
+    const size_t items = m_scene.elements.size() + kFirstElementItem;
+    const int rows = buffer.rowCount();
+    renderer.parallelFor(2, [&](size_t begin, size_t end) {
+        for (size_t half = begin; half < end; ++half) {
+            std::vector<double>& sums = half == 0 ? out : m_secondHalf;
+            sums.assign(items, 0.0);
+            buffer.accumulateRows(hemicube, sums, half == 0 ? 0 : rows / 2, half == 0 ? rows / 2 : rows);
+        }
+    });
+    for (size_t i = 0; i < items; ++i)
+        out[i] += m_secondHalf[i];
 }
 
 ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLock)

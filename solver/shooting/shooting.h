@@ -58,6 +58,7 @@
 #include "solver/shooting/energy_balance.h"
 #include "solver/shooting/gap_shooters.h"
 #include "solver/shooting/near_field.h"
+#include "solver/shooting/row_arena.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_renderer.h"
 #include "solver/visibility/item_buffer.h"
@@ -68,6 +69,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace regio::solver {
@@ -162,31 +164,44 @@ public:
     int shotResolution(int patch) const;
 
 private:
-    // A shooter's form factors: the elements it reaches, ascending, with F_ij.
+    // A shooter's form factors: the elements it reaches, ascending, with F_ij
+    // (a view: of the arena for a kept row, of m_built for one that is not).
     struct FormFactorRow {
-        std::vector<std::uint32_t> elements;
-        std::vector<double> factors;
-        std::vector<NearTerm> near;   // receivers close to the shooter (near_field.h)
-        std::vector<double> farScale; // per shooter element (near_field.h); empty = 1
+        std::span<const std::uint32_t> elements;
+        std::span<const double> factors;
+        std::span<const NearTerm> near;   // receivers close to the shooter (near_field.h)
+        std::span<const double> farScale; // per shooter element (near_field.h); empty = 1
         // A patch shot from several points (gap_shooters.h): per receiver
         // what each point saw of it, pointFactors[k * points + p] (the far
         // receivers; `factors` then holds the mean, which no shot uses), and
         // farScale[s * points + p] what element s's power carries through
         // point p.
         int points = 1;
-        std::vector<double> pointFactors;
+        std::span<const double> pointFactors;
         double escaped = 0.0;
         double blocked = 0.0;
         std::size_t bytes() const
         {
-            std::size_t b = elements.capacity() * sizeof(std::uint32_t) + factors.capacity() * sizeof(double) +
-                            near.capacity() * sizeof(NearTerm) + farScale.capacity() * sizeof(double);
-            return b + pointFactors.capacity() * sizeof(double);
+            return elements.size_bytes() + factors.size_bytes() + near.size_bytes() + farScale.size_bytes() +
+                   pointFactors.size_bytes();
         }
+    };
+    // Where a rendered row is built.
+    struct RowStorage {
+        std::vector<std::uint32_t> elements;
+        std::vector<double> factors;
+        std::vector<NearTerm> near;
+        std::vector<double> farScale;
+        std::vector<double> pointFactors;
     };
     // The row of `shooter`: kept, or rendered now (and kept if it fits).
     // Null when cancelled.
     const FormFactorRow* rowOf(int shooter, const std::atomic<bool>* cancel);
+    // out = the delta form factor sums per item id of `buffer`, summed in
+    // two halves of its rows on the renderer's threads (always two, so the
+    // sums are the same to the last bit for any thread count).
+    void accumulate(HemicubeRenderer& renderer, const ItemBuffer& buffer, const Hemicube& hemicube,
+                    std::vector<double>& out);
     // The patch's face emits (a light's patch): it shoots without overshoot, at the lights' resolution.
     bool emits(int patch) const;
     void dropRows();
@@ -201,9 +216,11 @@ private:
     std::optional<ItemBuffer> m_lightBuffer;
     std::size_t m_cacheBudget = 0;
     std::size_t m_cacheBytes = 0;
-    std::vector<FormFactorRow> m_rows; // per patch; kept when m_kept[p]
+    std::vector<FormFactorRow> m_rows; // per patch; kept (in m_arena) when m_kept[p]
     std::vector<char> m_kept;
-    FormFactorRow m_scratch; // a row that did not fit the budget
+    RowArena m_arena;
+    RowStorage m_built;     // the row rendered last
+    FormFactorRow m_unkept; // a view of it, when it did not fit the budget
     const FormFactorRow* m_lastRow = nullptr;
     int m_renderedShots = 0;
 
@@ -213,6 +230,7 @@ private:
     std::vector<Rgb> m_elementPower;                  // the shooter's elements' share of a shot
     std::vector<Rgb> m_patchPower;                    // per patch, W
     std::vector<double> m_perItem;                    // delta form factor sums per item id
+    std::vector<double> m_secondHalf;                 // the sums of an item buffer's second half of rows
     std::vector<std::vector<double>> m_perPointItems; // the same per point of a patch shot from several
     std::vector<Rgb> m_pointPower;                    // what each point of such a patch sends
 

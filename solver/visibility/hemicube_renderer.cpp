@@ -167,10 +167,16 @@ void HemicubeRenderer::parallelFor(size_t count, const std::function<void(size_t
         body(0, count);
         return;
     }
-    onEveryThread([&](int t) {
-        const size_t begin = count * size_t(t) / n, end = count * size_t(t + 1) / n;
-        if (begin < end)
-            body(begin, end);
+    // Indices handed out one at a time to whichever thread is free: the
+    // near field's receivers differ in cost by an order of magnitude (a
+    // facing receiver against one polygon, a close one against each of the
+    // shooter's elements at four points), and halves fixed in advance left
+    // one thread waiting for the other most of the time.
+    std::atomic<size_t> next{0};
+    onEveryThread([&](int) {
+        for (size_t i = next.fetch_add(1, std::memory_order_relaxed); i < count;
+             i = next.fetch_add(1, std::memory_order_relaxed))
+            body(i, i + 1);
     });
 }
 

@@ -84,10 +84,10 @@ public:
     // Summed over the threads: each piece and region is counted once.
     VisibilityStats stats() const;
 
-    // Runs body(begin, end) on the renderer's threads over consecutive
-    // shares of [0, count), the caller taking the first, and returns when
-    // all are done: other work of a shot (the near field's contour
-    // formula) uses the threads the render keeps.
+    // Runs body(i, i + 1) for every i of [0, count) on the renderer's
+    // threads, each index once, handed out in increasing order to whichever
+    // thread is free, and returns when all are done: other work of a shot
+    // (the near field's contour formula) uses the threads the render keeps.
     void parallelFor(size_t count, const std::function<void(size_t begin, size_t end)>& body);
 
 private:

@@ -104,16 +104,23 @@ inline void accumulateRow(const ItemId* ids, const float* tableRow, int half, do
 
 void ItemBuffer::accumulate(const Hemicube& hemicube, std::span<double> perItem) const
 {
+    accumulateRows(hemicube, perItem, 0, rowCount());
+}
+
+void ItemBuffer::accumulateRows(const Hemicube& hemicube, std::span<double> perItem, int rowBegin, int rowEnd) const
+{
     const int h = m_n / 2;
     const std::vector<float>& top = hemicube.topQuarter();
     const std::vector<float>& side = hemicube.sideHalf();
-    const ItemId* ids = face(HemicubeFace::Top);
-    for (int y = 0; y < m_n; ++y)
-        accumulateRow(ids + y * m_n, top.data() + hemicube.mirrored(y) * h, h, perItem.data());
-    for (int f = 1; f < kHemicubeFaceCount; ++f) {
-        ids = face(static_cast<HemicubeFace>(f));
-        for (int y = 0; y < h; ++y)
-            accumulateRow(ids + y * m_n, side.data() + y * h, h, perItem.data());
+    for (int f = 0; f < kHemicubeFaceCount; ++f) {
+        const auto face = static_cast<HemicubeFace>(f);
+        const int first = rowOf(face, 0);
+        const int begin = std::max(rowBegin, first) - first, end = std::min(rowEnd, first + height(face)) - first;
+        const ItemId* ids = this->face(face);
+        for (int y = begin; y < end; ++y)
+            accumulateRow(ids + y * m_n,
+                          face == HemicubeFace::Top ? top.data() + hemicube.mirrored(y) * h : side.data() + y * h, h,
+                          perItem.data());
     }
 }
 

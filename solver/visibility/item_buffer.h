@@ -75,6 +75,9 @@ public:
     // every id painted. Consecutive pixels of one id are summed before the
     // scattered add: runs are long, and the add is the random access.
     void accumulate(const Hemicube& hemicube, std::span<double> perItem) const;
+    // The same for the buffer's rows [rowBegin, rowEnd) only (rows as in
+    // mergeLater: the top face's, then each side face's in turn).
+    void accumulateRows(const Hemicube& hemicube, std::span<double> perItem, int rowBegin, int rowEnd) const;
 
 private:
     struct Span {

@@ -1,13 +1,17 @@
 // How shots run changes no result: a shot that reuses the kept form factors
 // of its patch's earlier shot, and a hemicube rendered on several threads,
 // give the radiosity and the energy books of rendering every shot on one
-// thread, to the last bit.
+// thread, to the last bit. And the arena the kept rows live in.
+#include "solver/shooting/row_arena.h"
 #include "solver/solver.h"
 #include "support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <numeric>
 #include <set>
+#include <vector>
 
 using namespace regio;
 using namespace regio::solver;
@@ -128,4 +132,49 @@ TEST(ShotReuse, AnyThreadCountGivesTheResultOfOneThread)
         expectSameResult(a, solve("two-lights-room", two, 60));
         expectSameResult(a, solve("two-lights-room", three, 60));
     }
+}
+
+TEST(RowArena, KeepsCopiesThatStayValidUntilReset)
+{
+    RowArena arena;
+    std::vector<std::uint32_t> elements(1000);
+    std::iota(elements.begin(), elements.end(), 7u);
+    std::vector<double> factors(1000, 0.25);
+    std::vector<std::span<const std::uint32_t>> kept;
+    std::vector<std::span<const double>> keptFactors;
+    // More rows than one chunk holds: earlier rows must not move.
+    for (int row = 0; row < 5000; ++row) {
+        kept.push_back(arena.keep(std::span<const std::uint32_t>(elements)));
+        keptFactors.push_back(arena.keep(std::span<const double>(factors)));
+    }
+    elements.assign(elements.size(), 0u); // the arena holds copies
+    for (size_t row = 0; row < kept.size(); row += 499) {
+        ASSERT_EQ(kept[row].size(), 1000u);
+        EXPECT_EQ(kept[row][0], 7u);
+        EXPECT_EQ(kept[row][999], 1006u);
+        EXPECT_EQ(keptFactors[row][500], 0.25);
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(keptFactors[row].data()) % alignof(double), 0u);
+    }
+    EXPECT_TRUE(arena.keep(std::span<const double>()).empty());
+}
+
+TEST(RowArena, ResetReusesItsChunksAndARowLargerThanAChunkGetsItsOwn)
+{
+    RowArena arena;
+    const std::vector<double> row(100000, 1.0); // 800 kB
+    for (int i = 0; i < 100; ++i)
+        arena.keep(std::span<const double>(row));
+    const std::size_t held = arena.capacity();
+    ASSERT_GE(held, 100u * 800000u);
+    // A new mesh: the same rows again take no new memory.
+    arena.reset();
+    for (int i = 0; i < 100; ++i)
+        arena.keep(std::span<const double>(row));
+    EXPECT_EQ(arena.capacity(), held);
+    // One row of 80 MB, larger than a chunk.
+    const std::vector<double> huge(10000000, 2.0);
+    const std::span<const double> kept = arena.keep(std::span<const double>(huge));
+    EXPECT_EQ(kept.size(), huge.size());
+    EXPECT_EQ(kept.back(), 2.0);
+    EXPECT_GE(arena.capacity(), held + huge.size() * sizeof(double));
 }
