@@ -7,8 +7,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -201,6 +203,67 @@ TEST(HemicubeRaster, EdgesThroughPixelCentresIncludeTheLeftAndTopAndExcludeTheRi
             total += cov.at(HemicubeFace::Top, x, y);
         }
     EXPECT_EQ(total, 9);
+}
+
+TEST(HemicubeRaster, EveryTriangleCoversThePixelCentresThatThePixelCentreRuleGivesIt)
+{
+    // The rule, pixel by pixel, from the snapped corners: the centre of
+    // pixel (x, y) is covered when every edge that spans its row (the edge
+    // taken bottom-up, from y_p to y_q with y_p <= centre < y_q) has it on
+    // the inner side, a centre on a left edge counting as inside and one on
+    // a right edge as outside. Triangles of every size, from slivers under a
+    // pixel to many pixels (one-row edges and stepped ones), their corners
+    // on quarter pixels so that edges run through centres often.
+    constexpr int n = 32;
+    Hemicube h(n);
+    HemicubeRaster raster(h);
+    constexpr std::int64_t one = std::int64_t(1) << HemicubeRaster::kSubpixelBits, half = one / 2;
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> quarter(8, 4 * n - 8); // inside the top face
+    std::uniform_real_distribution<double> logSize(std::log(0.3), std::log(40.0));
+    int covered = 0, mismatches = 0;
+    for (int t = 0; t < 20000; ++t) {
+        const double size = std::exp(logSize(rng)); // quarter pixels
+        const int cx = quarter(rng), cy = quarter(rng);
+        std::uniform_int_distribution<int> offset(-int(size), int(size));
+        std::vector<Vec3> tri;
+        for (int k = 0; k < 3; ++k) {
+            const int qx = std::clamp(cx + offset(rng), 4, 4 * n - 4), qy = std::clamp(cy + offset(rng), 4, 4 * n - 4);
+            tri.push_back({qx * 0.5 / n - 1.0, qy * 0.5 / n - 1.0, 1.0});
+        }
+        Coverage cov(h);
+        raster.rasterize(tri, cov);
+        const std::vector<FixedVertex> fixed(raster.lastProjection().begin(), raster.lastProjection().end());
+        ASSERT_EQ(fixed.size(), 3u);
+        const std::int64_t area2 = (std::int64_t(fixed[1].x) - fixed[0].x) * (std::int64_t(fixed[2].y) - fixed[0].y) -
+                                   (std::int64_t(fixed[2].x) - fixed[0].x) * (std::int64_t(fixed[1].y) - fixed[0].y);
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const std::int64_t px = x * one + half, py = y * one + half;
+                bool inside = area2 != 0;
+                int spanning = 0;
+                for (int k = 0; k < 3 && inside; ++k) {
+                    FixedVertex p = fixed[size_t(k)], q = fixed[size_t((k + 1) % 3)];
+                    if (p.y == q.y)
+                        continue;
+                    const bool upward = q.y > p.y;
+                    const bool rightEdge = upward == (area2 > 0);
+                    if (!upward)
+                        std::swap(p, q);
+                    if (!(p.y <= py && py < q.y))
+                        continue;
+                    ++spanning;
+                    const std::int64_t side =
+                        (px - p.x) * (std::int64_t(q.y) - p.y) - (py - p.y) * (std::int64_t(q.x) - p.x);
+                    inside = rightEdge ? side < 0 : side >= 0;
+                }
+                inside = inside && spanning > 0;
+                covered += inside;
+                mismatches += cov.at(HemicubeFace::Top, x, y) != (inside ? 1 : 0);
+            }
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(covered, 20000) << "the triangles were expected to cover pixels";
 }
 
 TEST(HemicubeRaster, WindingDoesNotChangeTheCoveredPixels)
