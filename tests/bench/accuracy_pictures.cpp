@@ -3,7 +3,7 @@
 // differs from the independent pointwise reference
 // (tests/support/pointwise_reference.h).
 //
-//   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES [PICTURE]]]
+//   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES [PICTURE [FACE...]]]]
 //
 // SCENE.json may also be "furnished-room": the small furnished room of
 // docs/accuracy.md, generated (tests/support/furnished_room.h, seed 1, six
@@ -22,6 +22,18 @@
 // reference's patches are 3 cm by default; a room of several metres needs
 // coarser ones (10 cm: minutes), its cost growing with the square of their
 // number.
+//
+// Each FACE (an id) named after PICTURE is split by source: at up to 120
+// points of a 1 cm grid on it (of the cells, when finer), the reference's
+// final gather face by face, once with the reference's own radiosities and
+// once with Regio's elements' in their place
+// (PointwiseReference::gatheredBySource), against the picture's value
+// there, and per source face what Regio's shots from it brought the face
+// (the solve then runs shot by shot) against the reference's gather of
+// Regio's radiosity of it. Where Regio's value is off but the reference's
+// gather of Regio's sources is not, the error is in Regio's transport into
+// the face, and the last column says from where; where both are, in the
+// sources.
 #include "model/io/scene_json.h"
 #include "output/false_colour.h"
 #include "output/legend_overlay.h"
@@ -105,6 +117,102 @@ model::Result<model::Scene> furnishedRoomWithCamera()
     return room;
 }
 
+// What Regio's shots brought each of `faces` (ids), by the face of the
+// shooting patch: luminance x area of the radiosity each shot added,
+// summed over the solve (adaptive subdivision keeps a face's
+// area-weighted sum, so the sums carry over a round).
+using ShotsBySource = std::map<std::string, std::map<std::string, double>>;
+ShotsBySource solveRecordingSources(solver::Solver& solver, const std::vector<std::string>& faces)
+{
+    const auto sums = [&] {
+        std::vector<double> out(faces.size(), 0.0);
+        const solver::PreparedScene& prepared = solver.prepared();
+        const std::vector<model::Rgb>& b = solver.shooting().radiosity();
+        for (const solver::InputFace& f : prepared.faces)
+            for (size_t t = 0; t < faces.size(); ++t)
+                if (f.id == faces[t])
+                    for (int e : f.elements)
+                        out[t] += solver::luminance(b[size_t(e)]) * prepared.elements[size_t(e)].area;
+        return out;
+    };
+    ShotsBySource shots;
+    while (!solver.converged() && solver.stats().iterations < solver.settings().maxIterations) {
+        const std::vector<double> before = sums();
+        if (solver.step(1) != 1)
+            break;
+        const std::vector<double> after = sums();
+        const solver::PreparedScene& prepared = solver.prepared();
+        const int patch = solver.shooting().lastShooter();
+        const std::string& source = prepared.faces[size_t(prepared.patches[size_t(patch)].properties)].id;
+        for (size_t t = 0; t < faces.size(); ++t)
+            shots[faces[t]][source] += after[t] - before[t];
+    }
+    return shots;
+}
+
+// Prints the split by source of `faceId` (see the top of the file).
+void splitBySource(const std::string& faceId, const std::vector<test::FaceGeometry>& faces,
+                   const test::PointwiseReference& reference, const test::LitMeshProbe& shown,
+                   const test::LitMeshProbe& elements, const glm::vec3& ambient, double step,
+                   const std::map<std::string, double>& shots, double area)
+{
+    const int face = reference.faceIndex(faceId);
+    const auto geometry = std::find_if(faces.begin(), faces.end(), [&](const auto& f) { return f.id == faceId; });
+    if (face < 0 || geometry == faces.end()) {
+        std::printf("%s: no such face\n", faceId.c_str());
+        return;
+    }
+    std::vector<model::Vec3> points;
+    for (const Cell& c : cellsOf({*geometry}, reference, step))
+        points.push_back(c.centre);
+    const size_t stride = points.size() / 120 + 1;
+    const std::vector<test::ReferenceFace>& sources = reference.faces();
+    const test::ReferenceFace& receiver = sources[static_cast<size_t>(face)];
+    // Regio's element values at a point of a source (without the ambient
+    // term: what its shots carried).
+    const test::PointwiseReference::SourceRadiosity regio = [&](int source, const model::Vec3& at) {
+        return elements.displayRadiosityAt(sources[static_cast<size_t>(source)].id, at, glm::vec3(0.0f))
+            .value_or(model::Rgb{0.0});
+    };
+    double truth = 0.0, regioShown = 0.0, gatherOfRegio = 0.0;
+    std::vector<double> fromReference(sources.size(), 0.0), fromRegio(sources.size(), 0.0);
+    size_t count = 0;
+    for (size_t i = 0; i < points.size(); i += stride, ++count) {
+        const model::Vec3& p = points[i];
+        const std::vector<model::Rgb> own = reference.gatheredBySource(face, p);
+        const std::vector<model::Rgb> theirs = reference.gatheredBySource(face, p, regio);
+        model::Rgb sum{0.0};
+        for (size_t k = 0; k < sources.size(); ++k) {
+            fromReference[k] += test::luminance(receiver.reflectance * own[k]);
+            fromRegio[k] += test::luminance(receiver.reflectance * theirs[k]);
+            sum += theirs[k];
+        }
+        truth += test::luminance(reference.radiosityAt(face, p));
+        regioShown += test::luminance(shown.displayRadiosityAt(faceId, p, ambient).value_or(model::Rgb{0.0}));
+        gatherOfRegio += test::luminance(receiver.emission + receiver.reflectance * sum);
+    }
+    if (count == 0 || truth <= 0.0)
+        return;
+    std::printf("%s, %zu points: Regio %+.2f %%, the reference's gather of Regio's sources %+.2f %%\n", faceId.c_str(),
+                count, 100.0 * (regioShown - truth) / truth, 100.0 * (gatherOfRegio - truth) / truth);
+    std::printf("    %-29s %-17s %-27s %s\n", "source", "share of the face", "Regio's source radiosity",
+                "Regio's shots from it against the gather of it");
+    std::vector<size_t> order(sources.size());
+    for (size_t k = 0; k < order.size(); ++k)
+        order[k] = k;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return fromReference[a] > fromReference[b]; });
+    for (size_t i = 0; i < std::min<size_t>(8, order.size()) && fromReference[order[i]] > 0.0; ++i) {
+        const size_t k = order[i];
+        const auto shot = shots.find(sources[k].id);
+        const double delivered = (shot == shots.end() ? 0.0 : shot->second) / area,
+                     gathered = fromRegio[k] / static_cast<double>(count);
+        std::printf("    from %-24s %9.1f %% %+21.2f %% %+30.2f %% (%+.2f %% of the face)\n", sources[k].id.c_str(),
+                    100.0 * fromReference[k] / truth, 100.0 * (fromRegio[k] - fromReference[k]) / fromReference[k],
+                    gathered > 0.0 ? 100.0 * (delivered - gathered) / gathered : 0.0,
+                    100.0 * (delivered - gathered) / (truth / static_cast<double>(count)));
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -112,7 +220,7 @@ int main(int argc, char** argv)
     if (argc < 3) {
         std::fprintf(stderr,
                      "usage: accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES "
-                     "[exact|smooth]]]\n");
+                     "[exact|smooth [FACE...]]]]\n");
         return 2;
     }
     const double cellSize = argc > 3 ? std::atof(argv[3]) : 0.01;
@@ -149,7 +257,12 @@ int main(int argc, char** argv)
         return 1;
     }
     const std::atomic<bool> cancel{false};
-    (*built)->run({}, cancel);
+    const std::vector<std::string> splitFaces(argv + std::min(argc, 6), argv + argc);
+    ShotsBySource shots;
+    if (splitFaces.empty())
+        (*built)->run({}, cancel);
+    else
+        shots = solveRecordingSources(**built, splitFaces);
     const solver::SolutionSnapshot snapshot = (*built)->snapshot();
     const output::LitMesh lit = pictureKind == "exact"
                                     ? output::litMeshForOutput((*built)->prepared(), snapshot.radiosity, true)
@@ -240,5 +353,13 @@ int main(int argc, char** argv)
         std::printf("  %-24s %+6.2f %%  %+6.2f %%\n", id.c_str(),
                     100.0 * (sums.smooth - sums.reference) / sums.reference,
                     100.0 * (sums.flat - sums.reference) / sums.reference);
+    for (const std::string& id : splitFaces) {
+        double area = 0.0; // of Regio's elements: what the shots' sums are over
+        for (const solver::InputFace& f : (*built)->prepared().faces)
+            if (f.id == id)
+                for (int e : f.elements)
+                    area += (*built)->prepared().elements[size_t(e)].area;
+        splitBySource(id, faces, reference, probe, flatProbe, ambient, std::min(cellSize, 0.01), shots[id], area);
+    }
     return 0;
 }

@@ -257,3 +257,35 @@ TEST(PointwiseReference, FurnaceWithABlockInsideStaysNearEmissionOverOneMinusRef
           std::pair{"block.body.px", Vec3(0.6, 0.01, 0.5)}, std::pair{"block.body.py", Vec3(0.45, 0.4, 0.5)}})
         EXPECT_NEAR(reference.radiosityAt(face, p).x, 2.0, 0.005 * 2.0) << face;
 }
+
+TEST(PointwiseReference, WhatAPointGathersBySourceAddsUpToItsRadiosityAndTakesOtherValuesInstead)
+{
+    const Rgb reflectance(0.5, 0.3, 0.8), emission(1.0, 2.0, 0.5);
+    const PointwiseReference reference(furnace(reflectance, emission), coarse());
+    const int floor = reference.faceIndex("room.body.ny");
+    const int ceiling = reference.faceIndex("room.body.py");
+    ASSERT_GE(floor, 0);
+    ASSERT_GE(ceiling, 0);
+    const Vec3 centre(0.5, 0.0, 0.5);
+    // Its own radiosity, face by face.
+    const std::vector<Rgb> bySource = reference.gatheredBySource(floor, centre);
+    ASSERT_EQ(bySource.size(), reference.faces().size());
+    EXPECT_EQ(bySource[size_t(floor)], Rgb(0.0)) << "a plane gathers nothing from itself";
+    Rgb sum(0.0);
+    for (const Rgb& b : bySource)
+        sum += b;
+    const Rgb whole = reference.radiosityAt(floor, centre);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(emission[c] + reflectance[c] * sum[c], whole[c], 1e-12 * whole[c]);
+    // One everywhere in place of the patches' values: each face's share is
+    // the point's form factor to it, the ceiling's the analytic one, and
+    // together the whole hemisphere of a closed room.
+    const PointwiseReference::SourceRadiosity one = [](int, const Vec3&) { return Rgb(1.0); };
+    const std::vector<Rgb> factors = reference.gatheredBySource(floor, centre, one);
+    const std::vector<Vec3>& top = reference.faces()[size_t(ceiling)].polygon;
+    EXPECT_NEAR(factors[size_t(ceiling)].x, pointToPolygonFormFactor(centre, {0.0, 1.0, 0.0}, top), 1e-9);
+    double total = 0.0;
+    for (const Rgb& f : factors)
+        total += f.x;
+    EXPECT_NEAR(total, 1.0, 1e-9);
+}

@@ -21,6 +21,7 @@ using namespace reference;
 struct PointwiseReference::Scratch {
     std::vector<Vec3> clipped;
     std::vector<int> occluders;
+    const SourceRadiosity* radiosity = nullptr; // stands in for the patches' values (gatheredBySource)
 };
 
 double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, std::span<const Vec3> polygon)
@@ -529,8 +530,9 @@ Rgb PointwiseReference::gatherPolygon(int face, const Vec3& point, const Referen
         }
         return sum;
     }
-    const Rgb radiosity =
-        depth > 0 && refined && !patch.refined.empty() ? refinedAt(patch, vertexMean(polygon)) : patch.radiosity;
+    const Rgb radiosity = scratch.radiosity ? (*scratch.radiosity)(patch.face, vertexMean(polygon))
+                          : depth > 0 && refined && !patch.refined.empty() ? refinedAt(patch, vertexMean(polygon))
+                                                                           : patch.radiosity;
     const double form = contourFormFactor(point, f.normal, polygon, scratch.clipped);
     if (form <= 0.0)
         return Rgb(0.0);
@@ -562,7 +564,8 @@ Rgb PointwiseReference::radiosityAt(int face, const Vec3& point) const
     return gatherAt(face, point, true, scratch);
 }
 
-Rgb PointwiseReference::gatherAt(int face, const Vec3& point, bool refined, Scratch& scratch) const
+Rgb PointwiseReference::gatherAt(int face, const Vec3& point, bool refined, Scratch& scratch,
+                                 std::vector<Rgb>* bySource) const
 {
     const ReferenceFace& f = m_faces[static_cast<std::size_t>(face)];
     if (f.area <= 0.0)
@@ -580,9 +583,24 @@ Rgb PointwiseReference::gatherAt(int face, const Vec3& point, bool refined, Scra
         if (std::none_of(p.polygon.begin(), p.polygon.end(),
                          [&](const Vec3& q) { return glm::dot(f.normal, q - point) > kPlaneTolerance; }))
             continue;
-        gathered += gatherPolygon(face, point, p, p.polygon, p.gatherSamples, p.size, 0, mix64(j), refined, scratch);
+        const Rgb part =
+            gatherPolygon(face, point, p, p.polygon, p.gatherSamples, p.size, 0, mix64(j), refined, scratch);
+        gathered += part;
+        if (bySource)
+            (*bySource)[static_cast<std::size_t>(p.face)] += part;
     }
     return f.emission + f.reflectance * gathered;
+}
+
+std::vector<Rgb> PointwiseReference::gatheredBySource(int face, const Vec3& point,
+                                                      const SourceRadiosity& radiosity) const
+{
+    std::vector<Rgb> bySource(m_faces.size(), Rgb(0.0));
+    Scratch scratch;
+    if (radiosity)
+        scratch.radiosity = &radiosity;
+    gatherAt(face, point, true, scratch, &bySource);
+    return bySource;
 }
 
 Rgb PointwiseReference::radiosityAt(const std::string& faceId, const Vec3& point) const

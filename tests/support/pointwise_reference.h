@@ -44,6 +44,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -196,6 +197,17 @@ public:
     // Whether `point` of face `face` lies under a face that rests on it.
     bool covered(int face, const Vec3& point) const;
 
+    // What `point` of face `face` gathers from each face of the scene
+    // (index as faces(); B x F x V summed over the face's patches, before
+    // the receiver's reflectance): radiosityAt is its emission plus its
+    // reflectance times their sum. `radiosity`, when given, stands in for
+    // the patches' own values: radiosity(source face, point of the source)
+    // at the middle of each patch or part that the gather takes, e.g.
+    // another solution's, so that that solution's error at the point splits
+    // into what its sources have wrong and what its transport does.
+    using SourceRadiosity = std::function<Rgb(int face, const Vec3& point)>;
+    std::vector<Rgb> gatheredBySource(int face, const Vec3& point, const SourceRadiosity& radiosity = {}) const;
+
 private:
     struct Scratch; // buffers one thread reuses from call to call
 
@@ -227,7 +239,8 @@ private:
     Rgb gatherPolygon(int face, const Vec3& point, const ReferencePatch& patch, std::span<const Vec3> polygon,
                       std::span<const ReferenceSample> samples, double size, int depth, std::uint64_t seed,
                       bool refined, Scratch& scratch) const;
-    Rgb gatherAt(int face, const Vec3& point, bool refined, Scratch& scratch) const;
+    Rgb gatherAt(int face, const Vec3& point, bool refined, Scratch& scratch,
+                 std::vector<Rgb>* bySource = nullptr) const;
     // The refined value of the patch's cell that holds `point`.
     Rgb refinedAt(const ReferencePatch& patch, const Vec3& point) const;
 
