@@ -122,17 +122,26 @@ model::Result<model::Scene> furnishedRoomWithCamera()
 // summed over the solve (adaptive subdivision keeps a face's
 // area-weighted sum, so the sums carry over a round).
 using ShotsBySource = std::map<std::string, std::map<std::string, double>>;
+
+// The sum of weight(element) x area over the elements of the face `id`.
+template <class Weight>
+double sumOverFace(const solver::PreparedScene& prepared, const std::string& id, Weight&& weight)
+{
+    double sum = 0.0;
+    for (const solver::InputFace& f : prepared.faces)
+        if (f.id == id)
+            for (int e : f.elements)
+                sum += weight(e) * prepared.elements[size_t(e)].area;
+    return sum;
+}
+
 ShotsBySource solveRecordingSources(solver::Solver& solver, const std::vector<std::string>& faces)
 {
     const auto sums = [&] {
-        std::vector<double> out(faces.size(), 0.0);
-        const solver::PreparedScene& prepared = solver.prepared();
+        std::vector<double> out;
         const std::vector<model::Rgb>& b = solver.shooting().radiosity();
-        for (const solver::InputFace& f : prepared.faces)
-            for (size_t t = 0; t < faces.size(); ++t)
-                if (f.id == faces[t])
-                    for (int e : f.elements)
-                        out[t] += solver::luminance(b[size_t(e)]) * prepared.elements[size_t(e)].area;
+        for (const std::string& id : faces)
+            out.push_back(sumOverFace(solver.prepared(), id, [&](int e) { return solver::luminance(b[size_t(e)]); }));
         return out;
     };
     ShotsBySource shots;
@@ -181,15 +190,17 @@ void splitBySource(const std::string& faceId, const std::vector<test::FaceGeomet
         const model::Vec3& p = points[i];
         const std::vector<model::Rgb> own = reference.gatheredBySource(face, p);
         const std::vector<model::Rgb> theirs = reference.gatheredBySource(face, p, regio);
-        model::Rgb sum{0.0};
+        model::Rgb sumOwn{0.0}, sumTheirs{0.0};
         for (size_t k = 0; k < sources.size(); ++k) {
             fromReference[k] += test::luminance(receiver.reflectance * own[k]);
             fromRegio[k] += test::luminance(receiver.reflectance * theirs[k]);
-            sum += theirs[k];
+            sumOwn += own[k];
+            sumTheirs += theirs[k];
         }
-        truth += test::luminance(reference.radiosityAt(face, p));
+        // radiosityAt(face, p), without gathering it a third time.
+        truth += test::luminance(receiver.emission + receiver.reflectance * sumOwn);
         regioShown += test::luminance(shown.displayRadiosityAt(faceId, p, ambient).value_or(model::Rgb{0.0}));
-        gatherOfRegio += test::luminance(receiver.emission + receiver.reflectance * sum);
+        gatherOfRegio += test::luminance(receiver.emission + receiver.reflectance * sumTheirs);
     }
     if (count == 0 || truth <= 0.0)
         return;
@@ -354,11 +365,8 @@ int main(int argc, char** argv)
                     100.0 * (sums.smooth - sums.reference) / sums.reference,
                     100.0 * (sums.flat - sums.reference) / sums.reference);
     for (const std::string& id : splitFaces) {
-        double area = 0.0; // of Regio's elements: what the shots' sums are over
-        for (const solver::InputFace& f : (*built)->prepared().faces)
-            if (f.id == id)
-                for (int e : f.elements)
-                    area += (*built)->prepared().elements[size_t(e)].area;
+        // Of Regio's elements: what the shots' sums are over.
+        const double area = sumOverFace((*built)->prepared(), id, [](int) { return 1.0; });
         splitBySource(id, faces, reference, probe, flatProbe, ambient, std::min(cellSize, 0.01), shots[id], area);
     }
     return 0;
