@@ -269,7 +269,7 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
 
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
                       std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale,
-                      const ParallelFor& parallelFor)
+                      const ParallelFor& parallelFor, const SeenShare& seenShare)
 {
     farScale.clear();
     const Patch& patch = scene.patches[size_t(shooter)];
@@ -327,9 +327,13 @@ void correctNearField(const PreparedScene& scene, int shooter, const std::vector
                 // The form factor from each shooter element: this close, the
                 // gradient across the shooter matters.
                 nearFactors(scene, patch, mesh, e, scratch, fromEach);
-                for (int s = 0; s < patch.elementCount; ++s)
-                    if (const double factor = fromEach[size_t(s)]; factor > 0.0)
+                for (int s = 0; s < patch.elementCount; ++s) {
+                    double factor = fromEach[size_t(s)];
+                    if (seenShare && factor > 0.0)
+                        factor *= seenShare(std::uint32_t(k), s);
+                    if (factor > 0.0)
                         out.push_back({std::uint32_t(k), s, factor});
+                }
             }
         }
     };

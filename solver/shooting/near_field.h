@@ -74,8 +74,14 @@ struct NearTerm {
 // perhaps on several threads. The row is the same, bit for bit, with or
 // without it.
 using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
+// seenShare(entry, s), when given, is the share of shooter element s that
+// sees the near receiver elements[entry] (a patch behind a narrow face,
+// shot from several points: shooter_points.h), which its contour factors
+// are weighed by; without it a near receiver that the hemicube saw at all
+// is seen by every element of the shooter.
+using SeenShare = std::function<double(std::uint32_t entry, int shooterElement)>;
 void correctNearField(const PreparedScene& scene, int shooter, const std::vector<std::uint32_t>& elements,
                       std::vector<double>& factors, std::vector<NearTerm>& near, std::vector<double>& farScale,
-                      const ParallelFor& parallelFor = {});
+                      const ParallelFor& parallelFor = {}, const SeenShare& seenShare = {});
 
 } // namespace regio::solver

@@ -113,10 +113,11 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     ItemBuffer& buffer = light ? *m_lightBuffer : m_buffer;
     const Hemicube& hemicube = light ? m_lightHemicube : m_hemicube;
     const size_t elements = m_scene.elements.size();
-    // A patch in a narrow gap sees the scene from several points
-    // (gap_shooters.h): each point's factors are kept apart, the row's
-    // receivers and near terms come from their mean.
-    const std::vector<Vec3> points = shooterPoints(m_scene, shooter);
+    // A patch in a narrow gap or behind a narrow face sees the scene from
+    // several points (shooter_points.h): each point's factors are kept
+    // apart, the row's receivers come from their mean.
+    const ShooterKind kind = shooterKind(m_scene, shooter);
+    const std::vector<Vec3> points = shooterPoints(m_scene, shooter, kind);
     if (points.size() == 1) {
         if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
             return nullptr;
@@ -148,12 +149,23 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
             built.elements.push_back(static_cast<std::uint32_t>(j));
             built.factors.push_back(f);
         }
+    // Behind a narrow face, a near receiver is seen by the shooter's
+    // elements whose points see it (shooter_points.h).
+    std::vector<double> weights;
+    SeenShare seen;
+    if (points.size() > 1)
+        weights = pointWeights(m_scene, shooter, points);
+    if (kind == ShooterKind::BehindNarrowFace)
+        seen = [&](std::uint32_t entry, int s) {
+            return seenShare(m_scene, built.elements[entry], points, weights, s, m_perPointItems);
+        };
     correctNearField(
         m_scene, shooter, built.elements, built.factors, built.near, built.farScale,
-        [this](size_t count, const std::function<void(size_t, size_t)>& body) { m_renderer.parallelFor(count, body); });
+        [this](size_t count, const std::function<void(size_t, size_t)>& body) { m_renderer.parallelFor(count, body); },
+        seen);
     if (points.size() > 1)
-        splitFarShareByPoints(m_scene, shooter, points, m_perPointItems, built.elements, built.near, built.pointFactors,
-                              built.farScale);
+        splitFarShareByPoints(m_scene, shooter, weights, m_perPointItems, built.elements, built.near,
+                              built.pointFactors, built.farScale);
     FormFactorRow row;
     row.elements = built.elements;
     row.factors = built.factors;
@@ -232,7 +244,7 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // near receivers each shooter element's power times its far share
     // (near_field.h).
     // A patch shot from several points sends through each point's factors
-    // what its elements give that point (gap_shooters.h).
+    // what its elements give that point (shooter_points.h).
     const size_t points = static_cast<size_t>(row->points);
     m_pointPower.assign(points, Rgb{0.0});
     if (row->farScale.empty())

@@ -38,8 +38,9 @@
 // the same patch reuses them instead of rendering the hemicube again: the
 // same numbers, so the same result to the last bit. The rows are dropped when
 // the mesh changes (adaptive subdivision). A patch in a narrow gap (a
-// ceiling over a lamp hung just under it) renders from several points and
-// keeps each point's factors (gap_shooters.h).
+// ceiling over a lamp hung just under it) or behind a narrow face (a wall
+// behind a table's leg) renders from several points and keeps each point's
+// factors (shooter_points.h).
 //
 // The lights' shots render a hemicube twice as fine as the others (at most
 // kLightHemicubeMaxResolution, never coarser than the scene's). They draw
@@ -56,9 +57,9 @@
 // scene's resolution.
 #include "solver/prepare/prepared_scene.h"
 #include "solver/shooting/energy_balance.h"
-#include "solver/shooting/gap_shooters.h"
 #include "solver/shooting/near_field.h"
 #include "solver/shooting/row_arena.h"
+#include "solver/shooting/shooter_points.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_renderer.h"
 #include "solver/visibility/item_buffer.h"
@@ -171,7 +172,7 @@ private:
         std::span<const double> factors;
         std::span<const NearTerm> near;   // receivers close to the shooter (near_field.h)
         std::span<const double> farScale; // per shooter element (near_field.h); empty = 1
-        // A patch shot from several points (gap_shooters.h): per receiver
+        // A patch shot from several points (shooter_points.h): per receiver
         // what each point saw of it, pointFactors[k * points + p] (the far
         // receivers; `factors` then holds the mean, which no shot uses), and
         // farScale[s * points + p] what element s's power carries through

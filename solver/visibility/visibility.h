@@ -83,7 +83,7 @@ inline constexpr HemicubeFaceSet faceBit(HemicubeFace f) { return 1u << static_c
 // patch uses this one frame.
 ShooterFrame shooterFrameOfPatch(const PreparedScene& scene, int patch);
 // The same frame at any point of a plane with unit normal `n` (a patch shot
-// from several points: solver/shooting/gap_shooters.h).
+// from several points: solver/shooting/shooter_points.h).
 ShooterFrame shooterFrameAt(const Vec3& point, const Vec3& n);
 
 struct VisibilityStats {

@@ -1,4 +1,4 @@
-#include "solver/shooting/gap_shooters.h"
+#include "solver/shooting/shooter_points.h"
 
 #include "solver/prepare/facing_faces.h"
 #include "solver/visibility/item_buffer.h"
@@ -12,19 +12,6 @@
 namespace regio::solver {
 
 namespace {
-bool inGap(const PreparedScene& scene, const Patch& patch, const std::array<Vec3, 3>& corners)
-{
-    const auto& facing = scene.faces[static_cast<size_t>(patch.properties)].facing;
-    if (facing.empty())
-        return false;
-    double longest = 0.0;
-    for (int i = 0; i < 3; ++i)
-        longest = std::max(longest, glm::distance(corners[size_t(i)], corners[size_t((i + 1) % 3)]));
-    return std::any_of(facing.begin(), facing.end(), [&](int face) {
-        const std::vector<Vec3>& polygon = scene.faces[static_cast<size_t>(face)].polygon;
-        return polygon.size() >= 3 && polygonGap(corners, polygon) * kGapShooterRatio < longest;
-    });
-}
 // Whether x (in the triangle's plane) lies inside the triangle abc, edges included.
 bool inside(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
 {
@@ -34,17 +21,65 @@ bool inside(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
 }
 } // namespace
 
-std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch)
+ShooterKind shooterKind(const PreparedScene& scene, int patch)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
+    const auto& facing = scene.faces[static_cast<size_t>(p.properties)].facing;
+    if (facing.empty())
+        return ShooterKind::Centre;
     const std::array<Vec3, 3> corners{scene.vertices[size_t(p.vertices[0])], scene.vertices[size_t(p.vertices[1])],
                                       scene.vertices[size_t(p.vertices[2])]};
-    if (!inGap(scene, p, corners))
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i)
+        longest = std::max(longest, glm::distance(corners[size_t(i)], corners[size_t((i + 1) % 3)]));
+    ShooterKind kind = ShooterKind::Centre;
+    for (int face : facing) {
+        const InputFace& f = scene.faces[static_cast<size_t>(face)];
+        if (f.polygon.size() < 3)
+            continue;
+        const double gap = polygonGap(corners, f.polygon);
+        if (gap * kGapShooterRatio < longest)
+            return ShooterKind::InGap;
+        // A face that solids cover whole (a shelf board's end against its
+        // side) has no elements and hides nothing.
+        if (gap < longest && !f.elements.empty() && polygonWidth(f.polygon) * kNarrowFaceWidth < longest)
+            kind = ShooterKind::BehindNarrowFace;
+    }
+    return kind;
+}
+
+double polygonWidth(std::span<const Vec3> polygon)
+{
+    double width = std::numeric_limits<double>::max();
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const Vec3 edge = polygon[(i + 1) % polygon.size()] - polygon[i];
+        const double length = glm::length(edge);
+        if (length <= 0.0)
+            continue;
+        double farthest = 0.0;
+        for (const Vec3& q : polygon)
+            farthest = std::max(farthest, glm::length(glm::cross(edge, q - polygon[i])) / length);
+        width = std::min(width, farthest);
+    }
+    return polygon.size() < 3 ? 0.0 : width;
+}
+
+std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch)
+{
+    return shooterPoints(scene, patch, shooterKind(scene, patch));
+}
+
+std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, ShooterKind kind)
+{
+    const Patch& p = scene.patches[static_cast<size_t>(patch)];
+    if (kind == ShooterKind::Centre)
         return {p.centroid};
+    const std::array<Vec3, 3> corners{scene.vertices[size_t(p.vertices[0])], scene.vertices[size_t(p.vertices[1])],
+                                      scene.vertices[size_t(p.vertices[2])]};
 
     // The k x k equal triangles of the patch: in barycentric steps of 1/k,
     // the k(k+1)/2 upright ones and the k(k-1)/2 turned ones between them.
-    constexpr int k = kGapShooterSplits;
+    constexpr int k = kShooterSplits;
     const Vec3 a = corners[0], ab = (corners[1] - corners[0]) / double(k), ac = (corners[2] - corners[0]) / double(k);
     std::vector<Vec3> points;
     points.reserve(size_t(k * k));
@@ -95,13 +130,31 @@ std::vector<double> pointWeights(const PreparedScene& scene, int patch, std::spa
     return w;
 }
 
-void splitFarShareByPoints(const PreparedScene& scene, int patch, std::span<const Vec3> points,
+double seenShare(const PreparedScene& scene, std::uint32_t element, std::span<const Vec3> points,
+                 std::span<const double> weights, int shooterElement, const std::vector<std::vector<double>>& perPoint)
+{
+    const Element& receiver = scene.elements[element];
+    const Vec3& onPlane = scene.vertices[size_t(receiver.vertices[0])];
+    const size_t m = points.size(), item = size_t(element) + kFirstElementItem;
+    double seen = 0.0, inFront = 0.0;
+    for (size_t q = 0; q < m; ++q) {
+        const double w = weights[size_t(shooterElement) * m + q];
+        if (w == 0.0 || glm::dot(receiver.normal, points[q] - onPlane) <= 0.0)
+            continue;
+        inFront += w;
+        if (perPoint[q][item] > 0.0)
+            seen += w;
+    }
+    return inFront > 0.0 ? seen / inFront : 0.0;
+}
+
+void splitFarShareByPoints(const PreparedScene& scene, int patch, std::span<const double> w,
                            const std::vector<std::vector<double>>& perPoint,
                            const std::vector<std::uint32_t>& rowElements, const std::vector<NearTerm>& near,
                            std::vector<double>& pointFactors, std::vector<double>& coefficients)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
-    const size_t m = points.size(), count = static_cast<size_t>(p.elementCount);
+    const size_t m = perPoint.size(), count = static_cast<size_t>(p.elementCount);
     std::vector<char> isNear(rowElements.size(), 0);
     std::vector<double> nearOf(count, 0.0); // each shooter element's near factors
     for (const NearTerm& t : near) {
@@ -122,7 +175,6 @@ void splitFarShareByPoints(const PreparedScene& scene, int patch, std::span<cons
             far[q] += f;
             pointFactors[k * m + q] = f;
         }
-    const std::vector<double> w = pointWeights(scene, patch, points);
     coefficients.assign(count * m, 0.0);
     for (size_t s = 0; s < count; ++s) {
         double totalOf = 0.0, farOf = 0.0;
