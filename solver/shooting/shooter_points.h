@@ -103,7 +103,7 @@ std::vector<double> pointWeights(const PreparedScene& scene, int patch, std::spa
 // there nothing stands between the patch and the lamp under it, and a lamp
 // element a few pixels high at the horizon of a point that misses it is
 // still seen; the far share is what is left of the hemicube's total after
-// the near factors, a few thousandths, and the walls' top took 60 % more
+// the near factors, a few thousandths, and the walls' top took 61 % more
 // when the near factors lost such pixel misses.
 double seenShare(const PreparedScene& scene, std::uint32_t element, std::span<const Vec3> points,
                  std::span<const double> weights, int shooterElement, const std::vector<std::vector<double>>& perPoint);
