@@ -57,6 +57,38 @@ Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Vi
     }
     if (m_totalArea > 0.0)
         m_meanReflectance = reflectanceArea / m_totalArea;
+    packReceivers();
+    sumPatchBooks();
+}
+
+void Shooting::packReceivers()
+{
+    m_receivers.resize(m_scene.elements.size());
+    for (size_t e = 0; e < m_scene.elements.size(); ++e) {
+        const Element& el = m_scene.elements[e];
+        m_receivers[e] = {el.area, el.patch, el.properties};
+    }
+}
+
+void Shooting::sumPatchBooks()
+{
+    m_patchUnshot.assign(m_scene.patches.size(), Rgb{0.0});
+    m_patchMagnitude.assign(m_scene.patches.size(), Rgb{0.0});
+    for (size_t p = 0; p < m_scene.patches.size(); ++p)
+        sumPatchBooks(static_cast<int>(p));
+}
+
+void Shooting::sumPatchBooks(int patch)
+{
+    const Patch& p = m_scene.patches[static_cast<size_t>(patch)];
+    Rgb unshot{0.0}, magnitude{0.0};
+    for (int e = p.firstElement; e < p.firstElement + p.elementCount; ++e) {
+        const Rgb u = m_unshot[static_cast<size_t>(e)] * m_scene.elements[static_cast<size_t>(e)].area;
+        unshot += u;
+        magnitude += glm::abs(u);
+    }
+    m_patchUnshot[static_cast<size_t>(patch)] = unshot;
+    m_patchMagnitude[static_cast<size_t>(patch)] = magnitude;
 }
 
 int Shooting::selectShooter() const
@@ -238,6 +270,7 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
         unshot = kept == 0.0 ? Rgb{0.0} : unshot * kept;
     }
     m_patchPower[static_cast<size_t>(shooter)] = kept == 0.0 ? Rgb{0.0} : power * kept;
+    sumPatchBooks(shooter);
     power *= omega; // exactly 1 when nothing is kept
 
     // What the far receivers' factors apply to: the shooter's power, or with
@@ -256,13 +289,20 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     // W arriving on element j: reflected into its radiosity and unshot
     // radiosity, the rest absorbed.
     const auto receive = [&](size_t j, const Rgb& incident) {
-        const Element& el = m_scene.elements[j];
+        const Receiver& el = m_receivers[j];
         const Rgb& rho = m_scene.properties[static_cast<size_t>(el.properties)].reflectance;
         const Rgb reflected = rho * incident;
         const Rgb delta = reflected / el.area; // dB_j = rho_j dB_i F_ij A_i / A_j
         m_radiosity[j] += delta;
+        const Rgb before = m_unshot[j] * el.area;
         m_unshot[j] += delta;
-        m_patchPower[static_cast<size_t>(el.patch)] += reflected;
+        const Rgb after = m_unshot[j] * el.area;
+        const auto p = static_cast<size_t>(el.patch);
+        m_patchPower[p] += reflected;
+        // Both as differences of the same products, so that where nothing
+        // is negative the two sums stay equal to the last bit.
+        m_patchUnshot[p] += after - before;
+        m_patchMagnitude[p] += glm::abs(after) - glm::abs(before);
         m_absorbed += incident - reflected;
         received += incident;
     };
@@ -324,10 +364,9 @@ EnergyBalance Shooting::energy() const
     e.emitted = m_emitted;
     e.absorbed = m_absorbed;
     e.escaped = m_escaped;
-    for (size_t j = 0; j < m_unshot.size(); ++j) {
-        const Rgb u = m_unshot[j] * m_scene.elements[j].area;
-        e.unshot += u;
-        e.unshotMagnitude += glm::abs(u);
+    for (size_t p = 0; p < m_patchUnshot.size(); ++p) {
+        e.unshot += m_patchUnshot[p];
+        e.unshotMagnitude += m_patchMagnitude[p];
     }
     return e;
 }
@@ -358,6 +397,8 @@ void Shooting::replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> 
     }
     if (m_totalArea > 0.0)
         m_meanReflectance = reflectanceArea / m_totalArea;
+    packReceivers();
+    sumPatchBooks();
 }
 
 Rgb Shooting::ambient(const EnergyBalance& books) const

@@ -128,10 +128,11 @@ public:
     // escaped, so new elements must carry unshot power that came from old ones.
     void replaceElementState(std::vector<Rgb> radiosity, std::vector<Rgb> unshot);
 
+    // The books; their unshot power sums the patches' (see m_patchUnshot).
     EnergyBalance energy() const;
     // Largest unshot / emitted power over the channels that emit (0 if none).
     double unshotRatio() const { return unshotRatio(energy()); }
-    // The same from books already summed (energy() walks every element).
+    // The same from books already summed.
     double unshotRatio(const EnergyBalance& books) const;
     // Cohen et al. 1988: the unshot power spread uniformly with the mean
     // reflectance's interreflection factor 1/(1 - rho_avg); displaying
@@ -198,6 +199,11 @@ private:
     // The row of `shooter`: kept, or rendered now (and kept if it fits).
     // Null when cancelled.
     const FormFactorRow* rowOf(int shooter, const std::atomic<bool>* cancel);
+    // m_patchUnshot and m_patchMagnitude taken afresh from the elements: of
+    // every patch, or of one.
+    void sumPatchBooks();
+    void sumPatchBooks(int patch);
+    void packReceivers(); // m_receivers from the scene's elements
     // out = the delta form factor sums per item id of `buffer`, summed in
     // two halves of its rows on the renderer's threads (always two, so the
     // sums are the same to the last bit for any thread count).
@@ -227,9 +233,23 @@ private:
 
     std::vector<Rgb> m_radiosity; // per element, W/m^2
     std::vector<Rgb> m_unshot;    // per element, W/m^2
+    // What applying a row reads of each receiving element, packed: an
+    // Element is 80 bytes, and fetching it was most of a reused shot's time.
+    struct Receiver {
+        double area = 0.0;
+        int patch = -1;
+        int properties = -1;
+    };
+    std::vector<Receiver> m_receivers; // per element
     double m_overrelaxation = 1.0;
-    std::vector<Rgb> m_elementPower;                  // the shooter's elements' share of a shot
-    std::vector<Rgb> m_patchPower;                    // per patch, W
+    std::vector<Rgb> m_elementPower; // the shooter's elements' share of a shot
+    std::vector<Rgb> m_patchPower;   // per patch, W
+    // Per patch, the area-weighted sums of its elements' unshot radiosity
+    // and of its magnitude, kept up to date by every change of an element's
+    // unshot radiosity, so that the books need no walk over every element
+    // after each shot. A patch's sums are taken afresh when it shoots.
+    std::vector<Rgb> m_patchUnshot;                   // W
+    std::vector<Rgb> m_patchMagnitude;                // W
     std::vector<double> m_perItem;                    // delta form factor sums per item id
     std::vector<double> m_secondHalf;                 // the sums of an item buffer's second half of rows
     std::vector<std::vector<double>> m_perPointItems; // the same per point of a patch shot from several

@@ -1,6 +1,8 @@
 #include "solver/visibility/painter_order.h"
 
+#include "solver/visibility/closed_back_faces.h"
 #include "solver/visibility/hemicube_raster.h"
+#include "solver/visibility/node_culling.h"
 #include "solver/visibility/traversal.h"
 #include "solver/visibility/visibility.h"
 
@@ -11,6 +13,13 @@ namespace {
 PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shooterPlane)
 {
     PainterOrder out;
+    // As the solver paints: from a shooter on the empty side of every closed
+    // part, without their back faces (closed_back_faces.h); from a point with
+    // no plane, all.
+    const bool solidBacks = !shooterPlane || !closedBackFacesHidden(closedParts(scene), eye, shooterPlane->normal);
+    // And without the nodes whose pieces all lie behind the shooter
+    // (node_culling.h); they stay in `nodes`, the walk's order.
+    const std::vector<Box3> nodeBounds = shooterPlane ? nodePieceBounds(scene) : std::vector<Box3>{};
     forEachNodeBackToFront(
         scene, eye,
         [&](int region) {
@@ -23,8 +32,10 @@ PainterOrder walk(const PreparedScene& scene, const Vec3& eye, const Plane* shoo
         },
         [&](int nodeIndex, bool eyeInFront) {
             out.nodes.push_back(nodeIndex);
+            if (shooterPlane && piecesBehindShooter(nodeBounds[size_t(nodeIndex)], *shooterPlane))
+                return;
             const BspNode& node = scene.nodes[size_t(nodeIndex)];
-            forEachPaintRange(node, eyeInFront, [&](int begin, int end, bool receives) {
+            forEachPaintRange(node, eyeInFront, solidBacks, [&](int begin, int end, bool receives) {
                 for (int i = begin; i < end; ++i) {
                     const int element = scene.pieces[size_t(i)].element;
                     PaintStep* last = out.steps.empty() ? nullptr : &out.steps.back();

@@ -1,5 +1,6 @@
 #include "solver/visibility/visibility.h"
 
+#include "solver/visibility/node_culling.h"
 #include "solver/visibility/traversal.h"
 
 #include <glm/geometric.hpp>
@@ -204,9 +205,23 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
         m_stats.regionsCulled += culled;
         return !culled;
     };
+    if (m_closedPartsOf != m_scene.faces.data() || m_closedPartsCount != m_scene.faces.size()) { // a new scene
+        m_closedParts = closedParts(m_scene);
+        m_closedPartsOf = m_scene.faces.data();
+        m_closedPartsCount = m_scene.faces.size();
+    }
+    if (m_nodeBoundsOf != m_scene.pieces.data() || m_nodeBoundsCount != m_scene.pieces.size() ||
+        m_nodeBounds.size() != m_scene.nodes.size()) { // new pieces
+        m_nodeBounds = nodePieceBounds(m_scene);
+        m_nodeBoundsOf = m_scene.pieces.data();
+        m_nodeBoundsCount = m_scene.pieces.size();
+    }
+    const bool solidBacks = !closedBackFacesHidden(m_closedParts, frame.origin, frame.n);
     if (m_mode == model::Visibility::Painter) {
         forEachNodeBackToFront(m_scene, frame.origin, accept, [&](int nodeIndex, bool eyeInFront) {
-            forEachPaintRange(m_scene.nodes[static_cast<size_t>(nodeIndex)], eyeInFront,
+            if (piecesBehindShooter(m_nodeBounds[static_cast<size_t>(nodeIndex)], shooterPlane))
+                return;
+            forEachPaintRange(m_scene.nodes[static_cast<size_t>(nodeIndex)], eyeInFront, solidBacks,
                               [&](int begin, int end, bool receives) {
                                   if (begin < end)
                                       order.push_back({begin, end, receives});
@@ -214,14 +229,27 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
         });
         return;
     }
-    // Z-buffer: node array order, regions culled the same way.
+    // Z-buffer: node array order, regions and nodes culled the same way, and
+    // the closed parts' back faces left out when the painter leaves them out.
     std::vector<char>& culled = m_regionCulled;
     culled.resize(m_scene.regions.size());
     for (size_t r = 0; r < culled.size(); ++r)
         culled[r] = !accept(static_cast<int>(r));
-    for (const BspNode& node : m_scene.nodes)
-        if (node.pieceCount > 0 && (node.region < 0 || !culled[static_cast<size_t>(node.region)]))
-            order.push_back({node.firstPiece, node.firstPiece + node.pieceCount, true});
+    for (size_t n = 0; n < m_scene.nodes.size(); ++n) {
+        const BspNode& node = m_scene.nodes[n];
+        if (node.pieceCount == 0 || (node.region >= 0 && culled[static_cast<size_t>(node.region)]) ||
+            piecesBehindShooter(m_nodeBounds[n], shooterPlane))
+            continue;
+        int begin = node.firstPiece, end = node.firstPiece + node.pieceCount;
+        if (!solidBacks) {
+            if (node.plane.signedDistance(frame.origin) > 0.0)
+                end -= node.oppositeSolidPieces;
+            else
+                begin += node.forwardSolidPieces;
+        }
+        if (begin < end)
+            order.push_back({begin, end, true});
+    }
 }
 
 bool Visibility::paint(const ShooterFrame& frame, std::span<const PaintRange> ranges, ItemBuffer& buffer,

@@ -6,7 +6,8 @@
 // every element is painted in that order, as its pieces (solver/prepare/pieces.h)
 // node by node; later pieces overwrite earlier ones, no depth is stored or
 // interpolated. Regions whose contents lie behind the shooter's plane are
-// culled whole. Pieces facing away from the shooter are painted with
+// culled whole, and so are the nodes whose pieces all lie behind that plane
+// (solver/visibility/node_culling.h). Pieces facing away from the shooter are painted with
 // kBlockerItem: surfaces are opaque from both sides.
 //
 // Inside a node, coplanar receivers and blockers overlap where two surfaces
@@ -14,7 +15,10 @@
 // parts first, then the receivers, then back faces of solids. So a thin
 // two-sided wall receives on the side that faces the eye, and a face lying on
 // a solid (the bottom of a box standing on a box, and the top it stands on)
-// receives nothing there: it faces into that solid.
+// receives nothing there: it faces into that solid. From an eye outside
+// every solid (and inside every room built as one closed part) the closed
+// parts' back faces are hidden behind their own front faces and are not
+// painted at all (solver/visibility/closed_back_faces.h).
 //
 // Z-buffer (the reference): the same projection, clipping and pixel rule, any
 // order, a depth test per pixel (depth = 1/w, exact from the element plane).
@@ -32,6 +36,7 @@
 // order on those faces only, leaving the others' pixels alone.
 #include "model/scene.h"
 #include "solver/prepare/prepared_scene.h"
+#include "solver/visibility/closed_back_faces.h"
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
@@ -46,8 +51,10 @@ namespace regio::solver {
 // The painter's order inside one BSP node: calls op(begin, end, receives)
 // for the node's piece ranges in paint order (see the top of this file and
 // prepared_scene.h for the groups [F solid | F open | O open | O solid]).
+// Without `solidBacks` the closed parts' back faces are left out
+// (solver/visibility/closed_back_faces.h says when that changes nothing).
 template <class Op>
-inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
+inline void forEachPaintRange(const BspNode& node, bool eyeInFront, bool solidBacks, Op&& op)
 {
     const int begin = node.firstPiece, end = node.firstPiece + node.pieceCount;
     const int forwardEnd = begin + node.forwardPieces;
@@ -56,11 +63,13 @@ inline void forEachPaintRange(const BspNode& node, bool eyeInFront, Op&& op)
     if (eyeInFront) {
         op(forwardEnd, oppositeSolidBegin, false); // O open: blockers
         op(begin, forwardEnd, true);               // F: receivers
-        op(oppositeSolidBegin, end, false);        // O solid: blockers
+        if (solidBacks)
+            op(oppositeSolidBegin, end, false); // O solid: blockers
     } else {
         op(forwardSolidEnd, forwardEnd, false); // F open: blockers
         op(forwardEnd, end, true);              // O: receivers
-        op(begin, forwardSolidEnd, false);      // F solid: blockers
+        if (solidBacks)
+            op(begin, forwardSolidEnd, false); // F solid: blockers
     }
 }
 
@@ -161,6 +170,14 @@ private:
     std::uint32_t m_currentStamp = 0;
     std::vector<PaintRange> m_order;  // render's paint order
     std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter
+    // The closed parts (closed_back_faces.h), of the faces array they were taken from.
+    std::vector<ClosedPart> m_closedParts;
+    const InputFace* m_closedPartsOf = nullptr;
+    size_t m_closedPartsCount = 0;
+    // Each node's pieces' bounds (node_culling.h), of the pieces array they were taken from.
+    std::vector<Box3> m_nodeBounds;
+    const Piece* m_nodeBoundsOf = nullptr;
+    size_t m_nodeBoundsCount = 0;
 
     VisibilityStats m_stats;
 };

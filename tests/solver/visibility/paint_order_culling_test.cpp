@@ -1,0 +1,224 @@
+// What a render leaves out of the paint order, and that it changes no pixel:
+// the closed parts' back faces (solver/visibility/closed_back_faces.h), from
+// a shooter on the empty side of every closed part only, and the nodes whose
+// pieces all lie behind the shooter (solver/visibility/node_culling.h). The
+// item buffers are those painted from the whole order, pixel for pixel, in
+// both visibility modes.
+#include "model/geometry/primitives.h"
+#include "solver/prepare/prepare.h"
+#include "solver/visibility/closed_back_faces.h"
+#include "solver/visibility/node_culling.h"
+#include "solver/visibility/traversal.h"
+#include "solver/visibility/visibility.h"
+#include "support/furnished_room.h"
+#include "support/prepared_scenes.h"
+#include "support/sample_scenes.h"
+#include "support/solver_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+using namespace regio;
+using namespace regio::solver;
+
+namespace {
+
+ClosedPart partNamed(const PreparedScene& p, const std::string& faceId)
+{
+    const size_t face = test::faceNamed(p, faceId);
+    const std::vector<ClosedPart> parts = closedParts(p);
+    for (const ClosedPart& part : parts)
+        for (const auto& t : part.triangles)
+            if (std::ranges::count(p.faces[face].polygon, t[0]) > 0 &&
+                std::ranges::count(p.faces[face].polygon, t[1]) > 0 &&
+                std::ranges::count(p.faces[face].polygon, t[2]) > 0)
+                return part;
+    ADD_FAILURE() << "no closed part holds " << faceId;
+    return {};
+}
+
+// A room of 4 x 3 x 4 m built as one closed part facing in, a box standing
+// on its floor and a shelf against its back wall (z = 0).
+model::Scene furnishedShell()
+{
+    model::Scene scene;
+    test::addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    scene.objects.push_back({"room", "", {*model::makeRoom("room.shell", {0, 0, 0}, {4, 3, 4}, "grey")}});
+    test::addBox(scene, "box", {1, 0, 1}, {2, 1, 2}, "grey");
+    test::addBox(scene, "shelf", {2.5, 0, 0}, {3.5, 2, 0.4}, "grey");
+    return scene;
+}
+
+// The painter's order (or the z-buffer's node ranges) with every back face
+// and every node, the regions behind the shooter left out as a render
+// leaves them out.
+std::vector<PaintRange> wholeOrder(const PreparedScene& p, const ShooterFrame& frame, model::Visibility mode)
+{
+    const Plane plane = Plane::fromPointNormal(frame.origin, frame.n);
+    const auto accept = [&](int region) { return !boxBehindPlane(p.regions[size_t(region)].bounds, plane); };
+    std::vector<PaintRange> order;
+    if (mode == model::Visibility::Painter) {
+        forEachNodeBackToFront(p, frame.origin, accept, [&](int node, bool eyeInFront) {
+            forEachPaintRange(p.nodes[size_t(node)], eyeInFront, true, [&](int begin, int end, bool receives) {
+                if (begin < end)
+                    order.push_back({begin, end, receives});
+            });
+        });
+        return order;
+    }
+    for (const BspNode& node : p.nodes)
+        if (node.pieceCount > 0 && (node.region < 0 || accept(node.region)))
+            order.push_back({node.firstPiece, node.firstPiece + node.pieceCount, true});
+    return order;
+}
+
+// Renders every `stride`-th patch of `p` both ways; counts in `skipped` how
+// many of them left the back faces out.
+void expectSameBuffersAsTheWholeOrder(const PreparedScene& p, size_t stride, int& skipped)
+{
+    const Hemicube h(60);
+    const std::vector<ClosedPart> parts = closedParts(p);
+    skipped = 0;
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
+        SCOPED_TRACE(model::visibilityName(mode));
+        Visibility rendered(p, h, mode), full(p, h, mode);
+        ItemBuffer a = rendered.makeBuffer(), b = full.makeBuffer();
+        for (size_t i = 0; i < p.patches.size(); i += stride) {
+            const ShooterFrame frame = shooterFrameOfPatch(p, static_cast<int>(i));
+            ASSERT_TRUE(rendered.render(frame, a));
+            b.clear();
+            ASSERT_TRUE(full.paint(frame, wholeOrder(p, frame, mode), b));
+            ASSERT_TRUE(std::ranges::equal(a.all(), b.all())) << "patch " << i;
+            skipped += mode == model::Visibility::Painter && closedBackFacesHidden(parts, frame.origin, frame.n);
+        }
+        // Fewer pieces painted: the furniture's far sides, what lies behind.
+        EXPECT_LT(rendered.stats().elementsVisited, full.stats().elementsVisited);
+    }
+}
+
+} // namespace
+
+TEST(ClosedBackFaces, TheWindingNumberIsOneInsideASolidMinusOneInsideARoomAndZeroOutsideBoth)
+{
+    const PreparedScene p = test::prepared(furnishedShell());
+    const ClosedPart box = partNamed(p, "box.body.py");
+    const ClosedPart room = partNamed(p, "room.shell.ny");
+    EXPECT_FALSE(box.inward);
+    EXPECT_TRUE(room.inward);
+    EXPECT_NEAR(windingNumber(box, {1.5, 0.5, 1.5}), 1.0, 1e-12);
+    EXPECT_NEAR(windingNumber(box, {1.2, 0.9, 1.9}), 1.0, 1e-12);
+    EXPECT_NEAR(windingNumber(box, {3.0, 0.5, 1.5}), 0.0, 1e-12);
+    EXPECT_NEAR(windingNumber(room, {1.5, 0.5, 1.5}), -1.0, 1e-12);
+    EXPECT_NEAR(windingNumber(room, {5.0, 0.5, 1.5}), 0.0, 1e-12);
+    // On a face: half of the way.
+    EXPECT_NEAR(windingNumber(box, {1.5, 1.0, 1.5}), 0.5, 1e-12);
+}
+
+TEST(ClosedBackFaces, AreHiddenFromAShooterOnAFaceOfTheFurnitureOrOnTheRoomsWalls)
+{
+    const PreparedScene p = test::prepared(furnishedShell());
+    const std::vector<ClosedPart> parts = closedParts(p);
+    ASSERT_EQ(parts.size(), 3u);
+    EXPECT_TRUE(closedBackFacesHidden(parts, {1.5, 1.0, 1.5}, {0, 1, 0}));  // the box's top
+    EXPECT_TRUE(closedBackFacesHidden(parts, {2.0, 0.5, 1.5}, {1, 0, 0}));  // the box's side
+    EXPECT_TRUE(closedBackFacesHidden(parts, {0.5, 0.0, 0.5}, {0, 1, 0}));  // the floor beside the box
+    EXPECT_TRUE(closedBackFacesHidden(parts, {1.0, 1.5, 0.0}, {0, 0, 1}));  // the back wall beside the shelf
+    EXPECT_TRUE(closedBackFacesHidden(parts, {2.0, 3.0, 2.0}, {0, -1, 0})); // the ceiling
+    EXPECT_TRUE(closedBackFacesHidden(parts, {3.0, 2.0, 0.2}, {0, 1, 0}));  // the shelf's top
+}
+
+TEST(ClosedBackFaces, ArePaintedFromAShooterBehindAShelfInsideABoxOrOutsideTheRoom)
+{
+    const PreparedScene p = test::prepared(furnishedShell());
+    const std::vector<ClosedPart> parts = closedParts(p);
+    // The back wall where the shelf stands against it: the whole shelf faces away.
+    EXPECT_FALSE(closedBackFacesHidden(parts, {3.0, 1.0, 0.0}, {0, 0, 1}));
+    // The floor under the box, looking up into it.
+    EXPECT_FALSE(closedBackFacesHidden(parts, {1.5, 0.0, 1.5}, {0, 1, 0}));
+    EXPECT_FALSE(closedBackFacesHidden(parts, {1.5, 0.5, 1.5}, {1, 0, 0}));
+    // A wall's outside, looking away from the room: the room's walls face away.
+    EXPECT_FALSE(closedBackFacesHidden(parts, {0.0, 1.5, 2.0}, {-1, 0, 0}));
+    EXPECT_FALSE(closedBackFacesHidden(parts, {-1.0, 1.5, 2.0}, {1, 0, 0}));
+}
+
+TEST(ClosedBackFaces, AShooterUnderABoxStandingOnItsFaceSeesOnlyTheBoxsInside)
+{
+    model::Scene scene;
+    test::addMaterial(scene, "grey", {0.5, 0.5, 0.5});
+    test::addPolygon(scene, "floor", {{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}}, "grey");
+    test::addBox(scene, "box", {-0.5, 0, -0.5}, {0.5, 1, 0.5}, "grey");
+    test::addBox(scene, "far", {1.2, 0, 1.2}, {1.8, 2, 1.8}, "grey");
+    const PreparedScene p = test::prepared(scene);
+    const Hemicube h(40);
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
+        Visibility vis(p, h, mode);
+        ItemBuffer buffer = vis.makeBuffer();
+        vis.render(ShooterFrame::make({0.1, 0.0, -0.2}, {0, 1, 0}), buffer);
+        const std::set<ItemId> seen(buffer.all().begin(), buffer.all().end());
+        EXPECT_EQ(seen, std::set<ItemId>{kBlockerItem}) << model::visibilityName(mode);
+    }
+}
+
+TEST(PaintOrderCulling, ChangesNoPixelOfTheSampleRoom)
+{
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
+    int skipped = 0;
+    expectSameBuffersAsTheWholeOrder(p, 7, skipped);
+    EXPECT_GT(skipped, int(p.patches.size() / 7) * 9 / 10);
+}
+
+TEST(PaintOrderCulling, ChangesNoPixelOfAFurnishedRoomBuiltAsOneShell)
+{
+    const PreparedScene p = test::prepared(test::furnishedRoom(3, 12, {8.0, 3.0, 6.0}));
+    int skipped = 0;
+    expectSameBuffersAsTheWholeOrder(p, 5, skipped);
+    EXPECT_GT(skipped, int(p.patches.size() / 5) * 9 / 10);
+}
+
+TEST(NodeCulling, ABoxBehindTheShooterOrOnItsPlaneIsCulledOneAHairInFrontIsNot)
+{
+    const Plane floor = Plane::fromPointNormal({0, 0, 0}, {0, 1, 0});
+    Box3 below;
+    below.extend({0, -2, 0});
+    below.extend({1, -1, 1});
+    EXPECT_TRUE(piecesBehindShooter(below, floor));
+    Box3 on; // the floor's own pieces: edge-on, they cover nothing
+    on.extend({0, 0, 0});
+    on.extend({3, 0, 2});
+    EXPECT_TRUE(piecesBehindShooter(on, floor));
+    Box3 above = on;
+    above.extend({1, 1e-9, 1}); // reaches the rasteriser's near plane
+    EXPECT_FALSE(piecesBehindShooter(above, floor));
+    Box3 wall; // stands on the floor
+    wall.extend({0, 0, 0});
+    wall.extend({0, 2.5, 3});
+    EXPECT_FALSE(piecesBehindShooter(wall, floor));
+    EXPECT_FALSE(piecesBehindShooter(Box3{}, floor));
+}
+
+TEST(NodeCulling, FromALampsTopUnderTheCeilingMostOfTheRoomIsLeftOut)
+{
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
+    const size_t top = test::faceNamed(p, "lamp1.panel.py");
+    const Patch& patch = p.patches[size_t(p.faces[top].firstPatch)];
+    const ShooterFrame frame = shooterFrameOfPatch(p, p.faces[top].firstPatch);
+    ASSERT_EQ(patch.properties, int(top));
+    const Hemicube h(60);
+    Visibility vis(p, h, model::Visibility::Painter);
+    ItemBuffer rendered = vis.makeBuffer(), whole = vis.makeBuffer();
+    ASSERT_TRUE(vis.render(frame, rendered));
+    const std::int64_t visited = vis.stats().elementsVisited;
+    whole.clear();
+    const std::vector<PaintRange> order = wholeOrder(p, frame, model::Visibility::Painter);
+    ASSERT_TRUE(vis.paint(frame, order, whole));
+    EXPECT_TRUE(std::ranges::equal(rendered.all(), whole.all()));
+    std::int64_t offered = 0;
+    for (const PaintRange& r : order)
+        offered += r.end - r.begin;
+    // Only the ceiling and the walls' top 2 cm lie in front of the lamp's
+    // top; the walls' nodes reach up there and are painted whole, the floor,
+    // the furniture and the lamps' undersides are left out.
+    EXPECT_LT(visited * 2, offered) << visited << " of " << offered;
+}
