@@ -46,7 +46,8 @@
 //     oppositeSolidPieces the last. From an eye in front of the node plane F
 //     faces the eye and O shows its back, and the other way round from behind.
 //     Back faces are still painted (as blockers with a "no receiver" id,
-//     traversal.h): nothing is skipped, only the role changes. The groups let
+//     traversal.h), except the closed parts' where no pixel would show them
+//     (solver/visibility/closed_back_faces.h). The groups let
 //     the painter put coplanar receivers and blockers in the right order
 //     (Visibility::render): open back faces first, then the receivers, then
 //     solid back faces.

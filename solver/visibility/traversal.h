@@ -9,7 +9,9 @@
 // away from the eye is NOT skipped: its elements still block light (surfaces
 // are opaque from both sides; skipping them lets light through the inside of
 // open or touching solids: the floor under the Cornell blocks read 22 % too
-// bright); only the order of its subtrees flips.
+// bright); only the order of its subtrees flips. (What the painter may
+// leave out, where that changes no pixel, it decides itself:
+// node_culling.h, closed_back_faces.h.)
 // Whether an element receives is the painter's business: `eyeInFront` tells
 // it which of the node's two orientation groups faces the eye (BspNode's
 // forward* counts).
