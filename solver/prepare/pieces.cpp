@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -587,6 +588,8 @@ void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> element
     for (Patch& p : scene.patches)
         p.node = p.elementCount > 0 ? scene.elements[size_t(p.firstElement)].node : -1;
     scene.stats.pieces = int(scene.pieces.size());
+    static std::atomic<std::uint64_t> builds{0};
+    scene.piecesStamp = ++builds;
 }
 
 } // namespace regio::solver

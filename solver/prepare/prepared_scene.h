@@ -66,6 +66,7 @@
 #include "model/types.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -242,6 +243,10 @@ struct PreparedScene {
     double patchSize = 0.5; // the settings it was meshed with
     int elementsPerPatch = 4;
     PrepareStats stats;
+    // A number no other build of the pieces has had (buildPieces sets it):
+    // what caches of the faces and pieces (Visibility's) compare to know
+    // they are still those of this scene; a copy keeps it with the content.
+    std::uint64_t piecesStamp = 0;
 };
 
 } // namespace regio::solver

@@ -205,16 +205,11 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
         m_stats.regionsCulled += culled;
         return !culled;
     };
-    if (m_closedPartsOf != m_scene.faces.data() || m_closedPartsCount != m_scene.faces.size()) { // a new scene
+    if (!m_cachesStamp || *m_cachesStamp != m_scene.piecesStamp || m_nodeBounds.size() != m_scene.nodes.size()) {
+        // A new scene, or new pieces.
         m_closedParts = closedParts(m_scene);
-        m_closedPartsOf = m_scene.faces.data();
-        m_closedPartsCount = m_scene.faces.size();
-    }
-    if (m_nodeBoundsOf != m_scene.pieces.data() || m_nodeBoundsCount != m_scene.pieces.size() ||
-        m_nodeBounds.size() != m_scene.nodes.size()) { // new pieces
         m_nodeBounds = nodePieceBounds(m_scene);
-        m_nodeBoundsOf = m_scene.pieces.data();
-        m_nodeBoundsCount = m_scene.pieces.size();
+        m_cachesStamp = m_scene.piecesStamp;
     }
     const bool solidBacks = !closedBackFacesHidden(m_closedParts, frame.origin, frame.n);
     if (m_mode == model::Visibility::Painter) {

@@ -43,6 +43,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -170,14 +171,11 @@ private:
     std::uint32_t m_currentStamp = 0;
     std::vector<PaintRange> m_order;  // render's paint order
     std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter
-    // The closed parts (closed_back_faces.h), of the faces array they were taken from.
+    // The closed parts (closed_back_faces.h) and each node's pieces' bounds
+    // (node_culling.h), of the scene's pieces with this stamp.
     std::vector<ClosedPart> m_closedParts;
-    const InputFace* m_closedPartsOf = nullptr;
-    size_t m_closedPartsCount = 0;
-    // Each node's pieces' bounds (node_culling.h), of the pieces array they were taken from.
     std::vector<Box3> m_nodeBounds;
-    const Piece* m_nodeBoundsOf = nullptr;
-    size_t m_nodeBoundsCount = 0;
+    std::optional<std::uint64_t> m_cachesStamp;
 
     VisibilityStats m_stats;
 };

@@ -222,3 +222,21 @@ TEST(NodeCulling, FromALampsTopUnderTheCeilingMostOfTheRoomIsLeftOut)
     // the furniture and the lamps' undersides are left out.
     EXPECT_LT(visited * 2, offered) << visited << " of " << offered;
 }
+
+TEST(PaintOrderCulling, FollowsTheScenesNewPiecesAsAFreshVisibilityDoes)
+{
+    // The solver assigns each refined mesh to the scene its visibility
+    // refers to; what the visibility keeps of the old pieces must go.
+    PreparedScene s = test::prepared(test::loadSample("two-lights-room"));
+    const Hemicube h(40);
+    Visibility kept(s, h, model::Visibility::Painter);
+    ItemBuffer a = kept.makeBuffer(), b = kept.makeBuffer();
+    ASSERT_TRUE(kept.render(shooterFrameOfPatch(s, 0), a));
+    s = test::prepared(test::loadSample("cornell-box"));
+    for (int patch : {0, 5, int(s.patches.size()) - 1}) {
+        Visibility fresh(s, h, model::Visibility::Painter);
+        ASSERT_TRUE(kept.render(shooterFrameOfPatch(s, patch), a));
+        ASSERT_TRUE(fresh.render(shooterFrameOfPatch(s, patch), b));
+        EXPECT_TRUE(std::ranges::equal(a.all(), b.all())) << "patch " << patch;
+    }
+}
