@@ -5,6 +5,9 @@
 //
 //   accuracy_pictures SCENE.json OUT.png [CELL_METRES [REFERENCE_PATCH_METRES [PICTURE [FACE...]]]]
 //
+// REFERENCE_PATCH_METRES may name faces of their own patch size after it,
+// "0.1,lamp.panel.py=0.02,ceiling.middle=0.02": a narrow gap cut fine in a
+// room cut coarse (PointwiseReferenceOptions::facePatchSizes).
 // SCENE.json may also be "furnished-room": the small furnished room of
 // docs/accuracy.md, generated (tests/support/furnished_room.h, seed 1, six
 // objects in a room of 5 x 2.5 x 4 m, its lamps 2 cm under the ceiling) with
@@ -25,6 +28,9 @@
 // reference's patches are 3 cm by default; a room of several metres needs
 // coarser ones (10 cm: minutes), its cost growing with the square of their
 // number.
+//
+// With ACCURACY_CELLS_CSV=PATH in the environment, every cell's face, centre,
+// shown and reference luminance go to PATH as CSV.
 //
 // Each FACE (an id) named after PICTURE is split by source: at up to 120
 // points of a 1 cm grid on it (of the cells, when finer), the reference's
@@ -57,6 +63,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -227,6 +235,32 @@ void splitBySource(const std::string& faceId, const std::vector<test::FaceGeomet
     }
 }
 
+// "0.1" or "0.1,FACE=0.02,...": the patch size, then faces of their own.
+bool parsePatchSizes(const std::string& text, test::PointwiseReferenceOptions& options)
+{
+    std::size_t start = 0;
+    bool first = true;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        const std::size_t equals = item.find('=');
+        if (first != (equals == std::string::npos))
+            return false;
+        char* rest = nullptr;
+        const char* number = first ? item.c_str() : item.c_str() + equals + 1;
+        const double metres = std::strtod(number, &rest);
+        if (rest == number || *rest != '\0' || !(metres > 0.0))
+            return false;
+        if (first)
+            options.patchSize = metres;
+        else
+            options.facePatchSizes[item.substr(0, equals)] = metres;
+        first = false;
+        start = end + 1;
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -239,15 +273,17 @@ int main(int argc, char** argv)
     }
     const double cellSize = argc > 3 ? std::atof(argv[3]) : 0.01;
     test::PointwiseReferenceOptions referenceOptions;
-    if (argc > 4)
-        referenceOptions.patchSize = std::atof(argv[4]);
+    if (argc > 4 && !parsePatchSizes(argv[4], referenceOptions)) {
+        std::fprintf(stderr, "the reference's patch sizes are METRES[,FACE=METRES...]\n");
+        return 2;
+    }
     const std::string pictureKind = argc > 5 ? argv[5] : "exact";
     if (pictureKind != "exact" && pictureKind != "smooth") {
         std::fprintf(stderr, "the picture is \"exact\" or \"smooth\"\n");
         return 2;
     }
-    if (!(cellSize > 0.0) || !(referenceOptions.patchSize > 0.0)) {
-        std::fprintf(stderr, "the cell and patch sizes must be positive numbers of metres\n");
+    if (!(cellSize > 0.0)) {
+        std::fprintf(stderr, "the cell size must be a positive number of metres\n");
         return 2;
     }
     model::Result<model::Scene> loaded =
@@ -286,7 +322,14 @@ int main(int argc, char** argv)
     const output::LitMesh flat = output::litMeshFromSolution((*built)->prepared(), snapshot.radiosity);
     const test::LitMeshProbe flatProbe(flat);
 
-    const test::PointwiseReference reference(scene, referenceOptions);
+    std::unique_ptr<const test::PointwiseReference> gathered;
+    try {
+        gathered = std::make_unique<const test::PointwiseReference>(scene, referenceOptions);
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+    }
+    const test::PointwiseReference& reference = *gathered;
     const std::vector<test::FaceGeometry> faces = test::faceGeometry(scene);
     const std::vector<Cell> cells = cellsOf(faces, reference, cellSize);
     std::vector<test::GatherPoint> gather;
@@ -340,6 +383,16 @@ int main(int argc, char** argv)
         if (shown && test::luminance(fineExpected[i]) > 0.0)
             addToMean(id, fine[i].centre, test::luminance(*shown), test::luminance(fineExpected[i]));
     }
+    // Every cell's value, for a closer look than the picture gives.
+    std::FILE* cellsCsv = nullptr;
+    if (const char* path = std::getenv("ACCURACY_CELLS_CSV")) {
+        cellsCsv = std::fopen(path, "w");
+        if (!cellsCsv) {
+            std::fprintf(stderr, "cannot write %s\n", path);
+            return 1;
+        }
+        std::fprintf(cellsCsv, "face,x,y,z,shown,reference\n");
+    }
     for (size_t i = 0; i < cells.size(); ++i) {
         const Cell& c = cells[i];
         const std::string& id = reference.faces()[static_cast<size_t>(c.face)].id;
@@ -347,6 +400,9 @@ int main(int argc, char** argv)
         const double truth = test::luminance(expected[i]);
         if (!shown || truth <= 0.0)
             continue;
+        if (cellsCsv)
+            std::fprintf(cellsCsv, "%s,%.4f,%.4f,%.4f,%.6g,%.6g\n", id.c_str(), c.centre.x, c.centre.y, c.centre.z,
+                         test::luminance(*shown), truth);
         const double error = 100.0 * std::abs(test::luminance(*shown) - truth) / truth;
         errors.push_back(error);
         if (!fineFaces.contains(c.face))
@@ -368,6 +424,9 @@ int main(int argc, char** argv)
         picture.triangleFace.push_back(c.face);
         picture.triangleFace.push_back(c.face);
     }
+
+    if (cellsCsv)
+        std::fclose(cellsCsv);
 
     const output::FalseColour ramp(output::FalseColourScale::Linear, 0.0, kLargestShownError);
     const output::DisplayColours colours =

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 using namespace regio;
@@ -288,4 +289,36 @@ TEST(PointwiseReference, WhatAPointGathersBySourceAddsUpToItsRadiosityAndTakesOt
     for (const Rgb& f : factors)
         total += f.x;
     EXPECT_NEAR(total, 1.0, 1e-9);
+}
+
+TEST(PointwiseReference, FacesWithTheirOwnPatchSizeKeepTheFurnaceAndTheHemisphere)
+{
+    // The floor cut four times finer than the rest, as a narrow gap is cut
+    // finer than the room around it: patches of two sizes meet along the
+    // floor's edges, and the furnace and the closed room still hold.
+    const Rgb reflectance(0.5), emission(1.0);
+    PointwiseReferenceOptions options = coarse();
+    options.facePatchSizes["room.body.ny"] = 0.025;
+    const PointwiseReference reference(furnace(reflectance, emission), options);
+    const int floor = reference.faceIndex("room.body.ny");
+    ASSERT_GE(floor, 0);
+    EXPECT_EQ(reference.faces()[size_t(floor)].patchCount, 1600);
+    EXPECT_EQ(reference.patches().size(), 5u * 100u + 1600u);
+    const std::vector<ReferencePatch>& patches = reference.patches();
+    for (size_t i = 0; i < patches.size(); i += 37) {
+        double row = 0.0;
+        for (size_t j = 0; j < patches.size(); ++j)
+            row += reference.formFactor(i, j);
+        ASSERT_NEAR(row, 1.0, 1e-9) << "patch " << i;
+    }
+    for (const ReferencePatch& p : patches)
+        ASSERT_NEAR(p.radiosity.x, 2.0, 2e-3) << "a patch of face " << reference.faces()[size_t(p.face)].id;
+    EXPECT_NEAR(reference.radiosityAt(floor, Vec3(0.01, 0.0, 0.5)).x, 2.0, 2e-3);
+
+    PointwiseReferenceOptions unknown = coarse();
+    unknown.facePatchSizes["room.body.nowhere"] = 0.05;
+    EXPECT_THROW(PointwiseReference(furnace(reflectance, emission), unknown), std::invalid_argument);
+    PointwiseReferenceOptions zero = coarse();
+    zero.facePatchSizes["room.body.ny"] = 0.0;
+    EXPECT_THROW(PointwiseReference(furnace(reflectance, emission), zero), std::invalid_argument);
 }

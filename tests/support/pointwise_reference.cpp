@@ -34,6 +34,12 @@ PointwiseReference::PointwiseReference(const model::Scene& scene, const Pointwis
     : m_options(options)
 {
     buildFaces(scene);
+    for (const auto& [faceId, size] : m_options.facePatchSizes) {
+        if (faceIndex(faceId) < 0)
+            throw std::invalid_argument("PointwiseReference: a patch size for " + faceId + ", which is no face");
+        if (!(size > 0.0))
+            throw std::invalid_argument("PointwiseReference: the patch size of " + faceId + " is not positive");
+    }
     buildPatches();
     buildOccluders();
     markNearPatches();
@@ -125,13 +131,14 @@ bool PointwiseReference::covered(int face, const Vec3& point) const
 
 void PointwiseReference::buildPatches()
 {
-    const double size = m_options.patchSize;
     std::vector<Vec3> points;
     for (std::size_t fi = 0; fi < m_faces.size(); ++fi) {
         ReferenceFace& f = m_faces[fi];
         f.firstPatch = static_cast<int>(m_patches.size());
         if (f.area <= 0.0)
             continue;
+        const auto own = m_options.facePatchSizes.find(f.id);
+        const double size = own != m_options.facePatchSizes.end() ? own->second : m_options.patchSize;
         double s0 = 0.0, s1 = 0.0, t0 = 0.0, t1 = 0.0;
         extent(f.polygon, f.u, s0, s1);
         extent(f.polygon, f.v, t0, t1);

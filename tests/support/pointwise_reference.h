@@ -45,6 +45,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -65,6 +66,10 @@ double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, std::span
 
 struct PointwiseReferenceOptions {
     double patchSize = 0.03; // metres: the edge of the grid cells faces are cut into
+    // Faces (by id) cut into a grid of their own size instead: a narrow gap
+    // fine, the rest of a room coarse, at a fraction of the cost of every
+    // face fine (the cost grows with the square of the patch count).
+    std::map<std::string, double> facePatchSizes;
     // Points per patch (the centres of n x n cells over it) for the
     // patch-to-patch form factors: each point is a receiver of the contour
     // formula and an end of the visibility rays (one ray from every point of
@@ -160,7 +165,8 @@ struct GatherPoint {
 class PointwiseReference {
 public:
     // Meshes the scene, computes the form factors and solves. Throws
-    // std::invalid_argument when a face names no existing material.
+    // std::invalid_argument when a face names no existing material, or
+    // options.facePatchSizes names no face or a size that is not positive.
     explicit PointwiseReference(const model::Scene& scene, const PointwiseReferenceOptions& options = {});
 
     const PointwiseReferenceOptions& options() const { return m_options; }
