@@ -571,6 +571,29 @@ void PieceBuilder::finish()
     }
 }
 
+// Numbers the vertices in the order the pieces first use them and drops
+// those no piece uses. A render walks the pieces node by node and transforms
+// each vertex it meets (Visibility): in this order those reads run nearly in
+// sequence, where in the mesh's order they jump about (adaptive subdivision
+// appends its vertices at the end). Only the numbering changes, never a
+// coordinate, so every render paints the same pixels.
+void numberVerticesByFirstUse(PreparedScene& scene)
+{
+    std::vector<int> renumbered(scene.pieceVertices.size(), -1);
+    std::vector<Vec3> vertices;
+    vertices.reserve(scene.pieceVertices.size());
+    for (Piece& piece : scene.pieces)
+        for (int& v : piece.vertices) {
+            int& number = renumbered[size_t(v)];
+            if (number < 0) {
+                number = int(vertices.size());
+                vertices.push_back(scene.pieceVertices[size_t(v)]);
+            }
+            v = number;
+        }
+    scene.pieceVertices = std::move(vertices);
+}
+
 } // namespace
 
 void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> elementLoops)
@@ -585,6 +608,7 @@ void buildPieces(PreparedScene& scene, std::span<const std::vector<int>> element
     for (size_t f = 0; f < scene.faces.size(); ++f)
         builder.pushFace(int(f));
     builder.finish();
+    numberVerticesByFirstUse(scene);
     for (Patch& p : scene.patches)
         p.node = p.elementCount > 0 ? scene.elements[size_t(p.firstElement)].node : -1;
     scene.stats.pieces = int(scene.pieces.size());

@@ -230,7 +230,9 @@ struct PreparedScene {
     std::vector<Vec3> vertices; // patch and element corners
     std::vector<Patch> patches;
     std::vector<Element> elements;
-    std::vector<Vec3> pieceVertices; // a copy of `vertices`, then the split points of pieces
+    // The pieces' corners: the mesh vertices and the split points of pieces,
+    // numbered in the order the pieces first use them (solver/prepare/pieces.h).
+    std::vector<Vec3> pieceVertices;
     std::vector<Piece> pieces;
     // The foot corners of solids where shadow lines begin
     // (solver/prepare/shadow_lines.h). The light around such a point depends

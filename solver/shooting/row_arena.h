@@ -8,9 +8,18 @@
 // took a tenth of the solve. Chunks are 2 MiB-aligned and offered to the
 // kernel for huge pages (madvise, Linux), so one fault maps 2 MiB; and they
 // outlive reset(), so the pages faulted in for one mesh serve the next.
+//
+// Even so, the first touch of fresh memory costs the kernel its zeroing
+// (and, in a virtual machine, the host its backing): about 0.9 s per
+// 320 MB on the machine of docs/performance.md. So once the last chunk is
+// half full, the arena readies the next one, allocated and touched on a
+// thread of its own while the solve goes on: the solve's threads are idle
+// for part of every shot, and there the faults cost nothing. It never
+// readies a chunk that would take its capacity over the limit it is given.
 #include <cstddef>
 #include <cstring>
 #include <span>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -18,7 +27,9 @@ namespace regio::solver {
 
 class RowArena {
 public:
-    RowArena() = default;
+    // `aheadLimit`: the capacity up to which the arena readies chunks ahead
+    // (the rows' budget; 0 readies none).
+    explicit RowArena(std::size_t aheadLimit = 0);
     RowArena(const RowArena&) = delete;
     RowArena& operator=(const RowArena&) = delete;
     ~RowArena();
@@ -36,7 +47,7 @@ public:
     }
     // Takes back everything kept; the chunks stay for what comes next.
     void reset();
-    // Bytes of chunk memory held (kept or free).
+    // Bytes of chunk memory held (kept, free, or readied ahead).
     std::size_t capacity() const;
 
 private:
@@ -46,9 +57,16 @@ private:
         std::size_t used = 0;
     };
     void* allocate(std::size_t bytes, std::size_t alignment);
+    // Starts readying the next chunk when the limit allows one more.
+    void readyAhead();
+    // The chunk readied ahead, waiting for its thread; none when there is none.
+    Chunk takeReadied();
 
     std::vector<Chunk> m_chunks;
     std::size_t m_current = 0; // the chunk being filled
+    std::size_t m_aheadLimit = 0;
+    std::thread m_readying; // allocates and touches m_readied
+    Chunk m_readied;
 };
 
 } // namespace regio::solver

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 
 namespace regio::solver {
 
@@ -21,12 +22,14 @@ bool inside(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
 }
 } // namespace
 
-ShooterKind shooterKind(const PreparedScene& scene, int patch)
+namespace {
+// Which kind of shooter the patch is, and in a gap, the face across it.
+std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
     const auto& facing = scene.faces[static_cast<size_t>(p.properties)].facing;
     if (facing.empty())
-        return ShooterKind::Centre;
+        return {ShooterKind::Centre, -1};
     const std::array<Vec3, 3> corners{scene.vertices[size_t(p.vertices[0])], scene.vertices[size_t(p.vertices[1])],
                                       scene.vertices[size_t(p.vertices[2])]};
     double longest = 0.0;
@@ -39,14 +42,19 @@ ShooterKind shooterKind(const PreparedScene& scene, int patch)
             continue;
         const double gap = polygonGap(corners, f.polygon);
         if (gap * kGapShooterRatio < longest)
-            return ShooterKind::InGap;
+            return {ShooterKind::InGap, face};
         // A face that solids cover whole (a shelf board's end against its
         // side) has no elements and hides nothing.
         if (gap < longest && !f.elements.empty() && polygonWidth(f.polygon) * kNarrowFaceWidth < longest)
             kind = ShooterKind::BehindNarrowFace;
     }
-    return kind;
+    return {kind, -1};
 }
+} // namespace
+
+ShooterKind shooterKind(const PreparedScene& scene, int patch) { return kindAndGapFace(scene, patch).first; }
+
+int gapFace(const PreparedScene& scene, int patch) { return kindAndGapFace(scene, patch).second; }
 
 double polygonWidth(std::span<const Vec3> polygon)
 {

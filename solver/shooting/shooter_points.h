@@ -77,6 +77,10 @@ inline constexpr int kShooterSplits = 4;
 // kShooterSplits^2 points in a gap or behind a narrow face.
 enum class ShooterKind { Centre, InGap, BehindNarrowFace };
 ShooterKind shooterKind(const PreparedScene& scene, int patch);
+// The face across the gap from a patch in a gap (the lamp's top under a
+// ceiling patch), -1 for a patch in none. From the patch's points it hides
+// most of the scene (solver/visibility/shadow_volume.h).
+int gapFace(const PreparedScene& scene, int patch);
 
 // The smallest width of a convex polygon: the least, over its edges, of
 // the farthest corner's distance from the edge's line.

@@ -31,6 +31,7 @@ Shooting::Shooting(const PreparedScene& scene, int hemicubeResolution, model::Vi
     // Unused (and kept smallest) when the lights render as the rest.
     , m_lightHemicube(options.finerLightHemicubes ? solver::lightHemicubeResolution(hemicubeResolution) : 2)
     , m_cacheBudget(options.formFactorCacheBytes)
+    , m_arena(options.formFactorCacheBytes)
     , m_overrelaxation(options.overrelaxation)
 {
     dropRows();
@@ -156,9 +157,15 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
         accumulate(renderer, buffer, hemicube, m_perItem);
     } else {
         const Vec3& normal = m_scene.properties[static_cast<size_t>(m_scene.patches[p].properties)].plane.normal;
+        // In a gap, the face across it hides most of the scene from every
+        // point: what lies in its shadow is not painted (the same pixels).
+        Occluder occluder;
+        if (const int across = kind == ShooterKind::InGap ? gapFace(m_scene, shooter) : -1; across >= 0)
+            occluder = {m_scene.faces[static_cast<size_t>(across)].polygon,
+                        m_scene.properties[static_cast<size_t>(across)].plane.normal};
         m_perPointItems.resize(points.size());
         for (size_t q = 0; q < points.size(); ++q) {
-            if (!renderer.render(shooterFrameAt(points[q], normal), buffer, cancel))
+            if (!renderer.render(shooterFrameAt(points[q], normal), buffer, cancel, occluder))
                 return nullptr;
             accumulate(renderer, buffer, hemicube, m_perPointItems[q]);
         }

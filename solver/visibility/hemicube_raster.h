@@ -18,6 +18,7 @@
 #include "model/types.h"
 #include "solver/visibility/hemicube.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -153,9 +154,16 @@ public:
                 const Vec3 polygon[3] = {*local[0], *local[1], *local[2]};
                 any = setupFace(face, polygon, (orCode & bits) >> (5 * f));
             } else {
-                m_fixed[0] = projected[0][f];
-                m_fixed[1] = projected[1][f];
-                m_fixed[2] = projected[2][f];
+                const FixedVertex& a = projected[0][f];
+                const FixedVertex& b = projected[1][f];
+                const FixedVertex& c = projected[2][f];
+                // Most pieces far from the eye hold no pixel centre: tell
+                // those here, before the call and the copy.
+                if (!mayHoldPixelCentre(a, b, c))
+                    continue;
+                m_fixed[0] = a;
+                m_fixed[1] = b;
+                m_fixed[2] = c;
                 m_fixedCount = 3;
                 any = setupSpans(face);
             }
@@ -168,6 +176,18 @@ public:
     std::span<const FixedVertex> lastProjection() const { return {m_fixed, static_cast<size_t>(m_fixedCount)}; }
 
 private:
+    // False when no row centre or no column centre lies between the
+    // triangle's lowest and highest vertex (as setupSpans decides it).
+    static bool mayHoldPixelCentre(const FixedVertex& a, const FixedVertex& b, const FixedVertex& c)
+    {
+        constexpr std::int32_t half = std::int32_t(1) << (kSubpixelBits - 1);
+        const auto centresBetween = [](std::int32_t lo, std::int32_t hi) {
+            // ceil((v - 1/2) / 1) in pixels, as an arithmetic shift.
+            return -((half - lo) >> kSubpixelBits) < -((half - hi) >> kSubpixelBits);
+        };
+        return centresBetween(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y})) &&
+               centresBetween(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
+    }
     // Clips against the planes flagged in `clipMask` (bit k = plane k of the
     // face), projects, snaps and computes the row spans. False if nothing is left.
     bool setupFace(HemicubeFace face, std::span<const Vec3> local, std::uint32_t clipMask);

@@ -194,15 +194,16 @@ bool HemicubeRenderer::timing() const
     return !m_forced && (m_timed[0].size() < kTimedShots || m_timed[1].size() < kTimedShots);
 }
 
-bool HemicubeRenderer::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+bool HemicubeRenderer::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                              const Occluder& occluder)
 {
     if (m_threads.empty())
-        return m_painters.front()->render(frame, buffer, cancel);
+        return m_painters.front()->render(frame, buffer, cancel, occluder);
     const RenderSplit s = split();
     const bool timed = timing();
     const Clock::time_point start = Clock::now();
-    const bool done =
-        s == RenderSplit::Order ? renderOrderSplit(frame, buffer, cancel) : renderFaceSplit(frame, buffer, cancel);
+    const bool done = s == RenderSplit::Order ? renderOrderSplit(frame, buffer, cancel, occluder)
+                                              : renderFaceSplit(frame, buffer, cancel, occluder);
     if (timed && done) {
         m_timed[static_cast<size_t>(s)].push_back(std::chrono::duration<double>(Clock::now() - start).count());
         if (!timing()) {
@@ -215,23 +216,25 @@ bool HemicubeRenderer::render(const ShooterFrame& frame, ItemBuffer& buffer, con
     return done;
 }
 
-bool HemicubeRenderer::renderFaceSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+bool HemicubeRenderer::renderFaceSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                                       const Occluder& occluder)
 {
-    m_painters.front()->paintOrder(frame, m_order);
+    m_painters.front()->paintOrder(frame, m_order, occluder);
     onEveryThread([&](int t) {
         const auto i = static_cast<size_t>(t);
         m_done[i] = true;
         if (m_faceGroups[i] == 0)
             return;
         buffer.clear(m_faceGroups[i]);
-        m_done[i] = m_painters[i]->paint(frame, m_order, buffer, cancel, m_faceGroups[i]);
+        m_done[i] = m_painters[i]->paint(frame, m_order, buffer, cancel, m_faceGroups[i], occluder);
     });
     return std::ranges::count(m_done, 0) == 0;
 }
 
-bool HemicubeRenderer::renderOrderSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+bool HemicubeRenderer::renderOrderSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                                        const Occluder& occluder)
 {
-    m_painters.front()->paintOrder(frame, m_order);
+    m_painters.front()->paintOrder(frame, m_order, occluder);
     std::int64_t total = 0;
     for (const PaintRange& r : m_order)
         total += r.end - r.begin;
@@ -252,7 +255,7 @@ bool HemicubeRenderer::renderOrderSplit(const ShooterFrame& frame, ItemBuffer& b
         const Clock::time_point start = Clock::now();
         ItemBuffer& target = t == 0 ? buffer : m_later[i - 1];
         target.clear();
-        m_done[i] = m_painters[i]->paint(frame, m_stretches[i], target, cancel);
+        m_done[i] = m_painters[i]->paint(frame, m_stretches[i], target, cancel, kAllHemicubeFaces, occluder);
         m_paintSeconds[i] = std::chrono::duration<double>(Clock::now() - start).count();
     });
     if (std::ranges::count(m_done, 0) > 0)

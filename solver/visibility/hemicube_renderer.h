@@ -72,7 +72,8 @@ public:
     ItemBuffer makeBuffer() const { return m_painters.front()->makeBuffer(); }
 
     // As Visibility::render: false if cancelled.
-    bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr);
+    bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr,
+                const Occluder& occluder = {});
 
     // The split in use: while timing, the one the next shot takes.
     RenderSplit split() const;
@@ -95,8 +96,10 @@ private:
     // returns when all have finished.
     void onEveryThread(const std::function<void(int)>& task);
     void work(int thread);
-    bool renderOrderSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel);
-    bool renderFaceSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel);
+    bool renderOrderSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                          const Occluder& occluder);
+    bool renderFaceSplit(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                         const Occluder& occluder);
 
     std::vector<std::unique_ptr<Visibility>> m_painters; // one per thread
     std::vector<ItemBuffer> m_later;                     // threads 1..n-1 paint here

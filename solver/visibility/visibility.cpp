@@ -17,6 +17,11 @@ namespace {
 // How often (in elements) a render looks at the cancel flag: a relaxed
 // atomic load is cheap, but not per element.
 constexpr int kCancelCheckInterval = 256;
+// Set in a vertex's outcode when it lies in the occluder's shadow volume
+// (shadow_volume.h), beside the rasteriser's bits (hemicube_raster.h): a
+// piece whose three corners all have it is left out.
+constexpr std::uint32_t kHiddenBit = 1u << 26;
+static_assert((kHiddenBit & (kAllOutcodeBits | kBelowBaseBit)) == 0);
 // Turns of the hemicube about the normal per metre along each axis (the
 // R3 sequence's irrationals over a centimetre): patches a few centimetres
 // apart turn by unrelated angles, and a patch moved by a hair turns by one.
@@ -56,9 +61,10 @@ Visibility::Visibility(const PreparedScene& scene, const Hemicube& hemicube, mod
 
 ItemBuffer Visibility::makeBuffer() const { return ItemBuffer(m_hemicube, m_mode == model::Visibility::ZBuffer); }
 
-void Visibility::prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces)
+void Visibility::prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces, const Occluder& occluder)
 {
     m_frame = frame;
+    m_hidden = ShadowVolume(frame.origin, occluder, Plane::fromPointNormal(frame.origin, frame.n));
     m_faces = faces & kAllHemicubeFaces;
     m_countsStats = (m_faces & faceBit(HemicubeFace::Top)) != 0;
     m_otherFaceBits = 0;
@@ -68,36 +74,33 @@ void Visibility::prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces)
     // Every paint takes a new stamp below, so the cached projections are
     // always those of the faces it paints.
     const size_t count = m_scene.pieceVertices.size();
-    if (m_stamp.size() != count) {
-        m_local.resize(count);
-        m_outcode.resize(count);
-        m_projected.resize(count * kHemicubeFaceCount);
-        m_stamp.assign(count, 0);
+    if (m_vertices.size() != count) {
+        m_vertices.assign(count, TouchedVertex{});
         m_currentStamp = 0;
     }
     if (++m_currentStamp == 0) { // wrapped: forget every stamp
-        std::fill(m_stamp.begin(), m_stamp.end(), 0);
+        for (TouchedVertex& v : m_vertices)
+            v.stamp = 0;
         m_currentStamp = 1;
     }
 }
 
 inline void Visibility::touch(int vertex)
 {
-    const auto v = static_cast<size_t>(vertex);
-    if (m_stamp[v] == m_currentStamp)
+    TouchedVertex& v = m_vertices[static_cast<size_t>(vertex)];
+    if (v.stamp == m_currentStamp)
         return;
-    m_stamp[v] = m_currentStamp;
-    const Vec3 local = m_frame.toLocal(m_scene.pieceVertices[v]);
-    const std::uint32_t code = hemicubeOutcode(local);
-    m_local[v] = local;
-    m_outcode[v] = code;
+    v.stamp = m_currentStamp;
+    v.local = m_frame.toLocal(m_scene.pieceVertices[static_cast<size_t>(vertex)]);
+    v.outcode = hemicubeOutcode(v.local);
+    if (!m_hidden.empty() && m_hidden.hides(m_scene.pieceVertices[static_cast<size_t>(vertex)]))
+        v.outcode |= kHiddenBit;
     // Project once per paint onto the painted faces whose frustum holds the
     // vertex (one, or two on a border): elements inside a face then skip
     // projection.
-    FixedVertex* projected = &m_projected[v * kHemicubeFaceCount];
     for (int f = 0; f < kHemicubeFaceCount; ++f)
-        if ((m_faces & (1u << f)) && !(code & faceOutcodeBits(f)))
-            projected[f] = m_raster.project(static_cast<HemicubeFace>(f), local);
+        if ((m_faces & (1u << f)) && !(v.outcode & faceOutcodeBits(f)))
+            v.projected[f] = m_raster.project(static_cast<HemicubeFace>(f), v.local);
 }
 
 bool Visibility::regionCulled(int region, const Plane& shooterPlane) const
@@ -113,12 +116,13 @@ inline void Visibility::rasterisePiece(int piece, Paint&& paint)
     touch(e.vertices[0]);
     touch(e.vertices[1]);
     touch(e.vertices[2]);
-    const auto i0 = static_cast<size_t>(e.vertices[0]), i1 = static_cast<size_t>(e.vertices[1]),
-               i2 = static_cast<size_t>(e.vertices[2]);
-    const std::uint32_t everyCode = m_outcode[i0] & m_outcode[i1] & m_outcode[i2];
-    // On or below the shooter's plane, or outside every face (a bit of each
-    // face's group is set).
-    bool hidden = (everyCode & kBelowBaseBit) != 0;
+    const TouchedVertex& v0 = m_vertices[static_cast<size_t>(e.vertices[0])];
+    const TouchedVertex& v1 = m_vertices[static_cast<size_t>(e.vertices[1])];
+    const TouchedVertex& v2 = m_vertices[static_cast<size_t>(e.vertices[2])];
+    const std::uint32_t everyCode = v0.outcode & v1.outcode & v2.outcode;
+    // On or below the shooter's plane, in the occluder's shadow, or outside
+    // every face (a bit of each face's group is set).
+    bool hidden = (everyCode & (kBelowBaseBit | kHiddenBit)) != 0;
     if (hidden)
         return;
     hidden = true;
@@ -129,11 +133,9 @@ inline void Visibility::rasterisePiece(int piece, Paint&& paint)
     m_stats.elementsRasterised += m_countsStats;
     // Only this visibility's faces from here on.
     const std::uint32_t andCode = everyCode | m_otherFaceBits;
-    const std::uint32_t orCode = m_outcode[i0] | m_outcode[i1] | m_outcode[i2];
-    const Vec3* const local[3] = {&m_local[i0], &m_local[i1], &m_local[i2]};
-    const FixedVertex* const projected[3] = {&m_projected[i0 * kHemicubeFaceCount],
-                                             &m_projected[i1 * kHemicubeFaceCount],
-                                             &m_projected[i2 * kHemicubeFaceCount]};
+    const std::uint32_t orCode = v0.outcode | v1.outcode | v2.outcode;
+    const Vec3* const local[3] = {&v0.local, &v1.local, &v2.local};
+    const FixedVertex* const projected[3] = {v0.projected, v1.projected, v2.projected};
     m_raster.rasterizeTriangle(local, projected, orCode, andCode, paint);
 }
 
@@ -196,7 +198,7 @@ void Visibility::depthTestPiece(int piece, ItemId id, ItemBuffer& buffer)
     });
 }
 
-void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order)
+void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order, const Occluder& occluder)
 {
     order.clear();
     const Plane shooterPlane = Plane::fromPointNormal(frame.origin, frame.n);
@@ -212,9 +214,13 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
         m_cachesStamp = m_scene.piecesStamp;
     }
     const bool solidBacks = !closedBackFacesHidden(m_closedParts, frame.origin, frame.n);
+    const ShadowVolume hidden(frame.origin, occluder, shooterPlane);
+    const auto culledNode = [&](size_t node) {
+        return piecesBehindShooter(m_nodeBounds[node], shooterPlane) || hidden.hides(m_nodeBounds[node]);
+    };
     if (m_mode == model::Visibility::Painter) {
         forEachNodeBackToFront(m_scene, frame.origin, accept, [&](int nodeIndex, bool eyeInFront) {
-            if (piecesBehindShooter(m_nodeBounds[static_cast<size_t>(nodeIndex)], shooterPlane))
+            if (culledNode(static_cast<size_t>(nodeIndex)))
                 return;
             forEachPaintRange(m_scene.nodes[static_cast<size_t>(nodeIndex)], eyeInFront, solidBacks,
                               [&](int begin, int end, bool receives) {
@@ -232,8 +238,7 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
         culled[r] = !accept(static_cast<int>(r));
     for (size_t n = 0; n < m_scene.nodes.size(); ++n) {
         const BspNode& node = m_scene.nodes[n];
-        if (node.pieceCount == 0 || (node.region >= 0 && culled[static_cast<size_t>(node.region)]) ||
-            piecesBehindShooter(m_nodeBounds[n], shooterPlane))
+        if (node.pieceCount == 0 || (node.region >= 0 && culled[static_cast<size_t>(node.region)]) || culledNode(n))
             continue;
         int begin = node.firstPiece, end = node.firstPiece + node.pieceCount;
         if (!solidBacks) {
@@ -248,11 +253,11 @@ void Visibility::paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& 
 }
 
 bool Visibility::paint(const ShooterFrame& frame, std::span<const PaintRange> ranges, ItemBuffer& buffer,
-                       const std::atomic<bool>* cancel, HemicubeFaceSet faces)
+                       const std::atomic<bool>* cancel, HemicubeFaceSet faces, const Occluder& occluder)
 {
     if (cancel && cancel->load(std::memory_order_relaxed))
         return false;
-    prepareFrame(frame, faces);
+    prepareFrame(frame, faces, occluder);
     int sinceCheck = 0;
     const bool painter = m_mode == model::Visibility::Painter;
     for (const PaintRange& range : ranges) {
@@ -278,11 +283,12 @@ bool Visibility::paint(const ShooterFrame& frame, std::span<const PaintRange> ra
     return true;
 }
 
-bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel)
+bool Visibility::render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel,
+                        const Occluder& occluder)
 {
     buffer.clear();
-    paintOrder(frame, m_order);
-    return paint(frame, m_order, buffer, cancel);
+    paintOrder(frame, m_order, occluder);
+    return paint(frame, m_order, buffer, cancel, kAllHemicubeFaces, occluder);
 }
 
 } // namespace regio::solver

@@ -18,7 +18,9 @@
 // receives nothing there: it faces into that solid. From an eye outside
 // every solid (and inside every room built as one closed part) the closed
 // parts' back faces are hidden behind their own front faces and are not
-// painted at all (solver/visibility/closed_back_faces.h).
+// painted at all (solver/visibility/closed_back_faces.h). Given a face just
+// in front of the eye (the lamp's top under a ceiling patch in a gap), what
+// lies in its shadow is not painted either (solver/visibility/shadow_volume.h).
 //
 // Z-buffer (the reference): the same projection, clipping and pixel rule, any
 // order, a depth test per pixel (depth = 1/w, exact from the element plane).
@@ -40,6 +42,7 @@
 #include "solver/visibility/hemicube.h"
 #include "solver/visibility/hemicube_raster.h"
 #include "solver/visibility/item_buffer.h"
+#include "solver/visibility/shadow_volume.h"
 
 #include <atomic>
 #include <cstdint>
@@ -126,24 +129,28 @@ public:
     // `frame.origin` into `buffer` (cleared first): paintOrder, then paint.
     // When `cancel` becomes true the render stops early and returns false (the
     // buffer is then incomplete).
-    bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr);
+    // With an `occluder` (a face standing just in front of the eye), what
+    // lies in its shadow volume is left out (shadow_volume.h): the same pixels.
+    bool render(const ShooterFrame& frame, ItemBuffer& buffer, const std::atomic<bool>* cancel = nullptr,
+                const Occluder& occluder = {});
 
     // The shooter's paint order: the painter's back-to-front node order
     // (§5.6, Appendix A) split into forEachPaintRange's ranges, or the
     // z-buffer's node array order; regions behind the shooter's plane are
     // left out (and counted in stats().regionsCulled).
-    void paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order);
+    void paintOrder(const ShooterFrame& frame, std::vector<PaintRange>& order, const Occluder& occluder = {});
     // Paints `ranges` (a stretch of the shooter's paint order) on the faces
     // in `faces` over what `buffer` holds, without clearing it, and leaves the
     // other faces' pixels alone; false if cancelled. The pieces count in
     // stats() when `faces` holds the top face (once each in a face split).
     bool paint(const ShooterFrame& frame, std::span<const PaintRange> ranges, ItemBuffer& buffer,
-               const std::atomic<bool>* cancel = nullptr, HemicubeFaceSet faces = kAllHemicubeFaces);
+               const std::atomic<bool>* cancel = nullptr, HemicubeFaceSet faces = kAllHemicubeFaces,
+               const Occluder& occluder = {});
 
     const VisibilityStats& stats() const { return m_stats; }
 
 private:
-    void prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces);
+    void prepareFrame(const ShooterFrame& frame, HemicubeFaceSet faces, const Occluder& occluder);
     void touch(int vertex);
     template <class Paint>
     void rasterisePiece(int piece, Paint&& paint);
@@ -162,12 +169,18 @@ private:
     bool m_countsStats = true;
     HemicubeRaster m_raster;
     ShooterFrame m_frame;
+    ShadowVolume m_hidden; // of the paint under way's occluder
 
-    // Per-vertex cache, valid for the shooter whose stamp it carries.
-    std::vector<Vec3> m_local;
-    std::vector<std::uint32_t> m_outcode;
-    std::vector<FixedVertex> m_projected; // kHemicubeFaceCount per vertex
-    std::vector<std::uint32_t> m_stamp;
+    // Per-vertex cache, valid for the shooter whose stamp it carries. One
+    // record per vertex, so that a piece's corner costs one or two cache
+    // lines, not one per field.
+    struct TouchedVertex {
+        std::uint32_t stamp = 0;
+        std::uint32_t outcode = 0;
+        Vec3 local{0.0};
+        FixedVertex projected[kHemicubeFaceCount]{}; // valid on the painted faces that hold it
+    };
+    std::vector<TouchedVertex> m_vertices;
     std::uint32_t m_currentStamp = 0;
     std::vector<PaintRange> m_order;  // render's paint order
     std::vector<char> m_regionCulled; // z-buffer: per region, for the current shooter

@@ -190,3 +190,21 @@ TEST(Pieces, RebuildingGivesTheSamePieces)
     }
     EXPECT_EQ(s.pieceVertices, vertices);
 }
+
+TEST(Pieces, VerticesAreNumberedInTheOrderThePiecesFirstUseThem)
+{
+    // A render walks the pieces in order and reads each corner it meets:
+    // numbered by first use, those reads run nearly in sequence. Every
+    // vertex is some piece's corner, and the first piece to use a vertex
+    // meets it right after the vertices numbered before it.
+    PreparedScene s = prepare(test::randomRegionScene(5, 2, 2), RegionsMode::Auto);
+    ASSERT_FALSE(s.pieces.empty());
+    int next = 0;
+    for (const Piece& p : s.pieces)
+        for (int v : p.vertices) {
+            ASSERT_LE(v, next) << "a vertex used before every lower number was";
+            if (v == next)
+                ++next;
+        }
+    EXPECT_EQ(size_t(next), s.pieceVertices.size()) << "vertices no piece uses";
+}

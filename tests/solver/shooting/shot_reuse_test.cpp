@@ -178,3 +178,36 @@ TEST(RowArena, ResetReusesItsChunksAndARowLargerThanAChunkGetsItsOwn)
     EXPECT_EQ(kept.back(), 2.0);
     EXPECT_GE(arena.capacity(), held + huge.size() * sizeof(double));
 }
+
+TEST(RowArena, ReadiesTheNextChunkAheadButNeverPastItsLimit)
+{
+    constexpr std::size_t MiB = std::size_t(1) << 20;
+    // No limit, no chunk ahead: an arena for rows that are never kept holds nothing.
+    EXPECT_EQ(RowArena().capacity(), 0u);
+
+    // Room for three chunks of 32 MiB: the first is made when a row needs
+    // it, each next one readied when the one before is half full, and no
+    // fourth.
+    RowArena arena(96 * MiB);
+    EXPECT_EQ(arena.capacity(), 0u);
+    std::vector<double> row(125000); // 1 MB
+    std::vector<std::span<const double>> kept;
+    for (int i = 0; i < 60; ++i) {
+        row.assign(row.size(), double(i));
+        kept.push_back(arena.keep(std::span<const double>(row)));
+        EXPECT_EQ(arena.capacity(), (i < 16 ? 32 : i < 49 ? 64 : 96) * MiB) << "row " << i;
+    }
+    for (int i = 0; i < 60; ++i) {
+        ASSERT_EQ(kept[size_t(i)].size(), row.size());
+        EXPECT_EQ(kept[size_t(i)].front(), double(i));
+        EXPECT_EQ(kept[size_t(i)].back(), double(i));
+    }
+    // A row larger than a chunk gets its own and leaves the readied one be.
+    const std::vector<double> huge(5000000, 3.0); // 40 MB
+    EXPECT_EQ(arena.keep(std::span<const double>(huge)).back(), 3.0);
+    EXPECT_EQ(arena.capacity(), 96 * MiB + 40 * MiB);
+    // What comes after takes the readied chunk, beyond which none is readied.
+    for (int i = 0; i < 30; ++i)
+        arena.keep(std::span<const double>(row));
+    EXPECT_EQ(arena.capacity(), 96 * MiB + 40 * MiB);
+}

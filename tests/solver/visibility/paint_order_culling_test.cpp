@@ -1,13 +1,16 @@
 // What a render leaves out of the paint order, and that it changes no pixel:
 // the closed parts' back faces (solver/visibility/closed_back_faces.h), from
-// a shooter on the empty side of every closed part only, and the nodes whose
-// pieces all lie behind the shooter (solver/visibility/node_culling.h). The
-// item buffers are those painted from the whole order, pixel for pixel, in
-// both visibility modes.
+// a shooter on the empty side of every closed part only, the nodes whose
+// pieces all lie behind the shooter (solver/visibility/node_culling.h), and
+// what lies in the shadow of the face across a gap
+// (solver/visibility/shadow_volume.h). The item buffers are those painted
+// from the whole order, pixel for pixel, in both visibility modes.
 #include "model/geometry/primitives.h"
 #include "solver/prepare/prepare.h"
+#include "solver/shooting/shooter_points.h"
 #include "solver/visibility/closed_back_faces.h"
 #include "solver/visibility/node_culling.h"
+#include "solver/visibility/shadow_volume.h"
 #include "solver/visibility/traversal.h"
 #include "solver/visibility/visibility.h"
 #include "support/furnished_room.h"
@@ -239,4 +242,88 @@ TEST(PaintOrderCulling, FollowsTheScenesNewPiecesAsAFreshVisibilityDoes)
         ASSERT_TRUE(fresh.render(shooterFrameOfPatch(s, patch), b));
         EXPECT_TRUE(std::ranges::equal(a.all(), b.all())) << "patch " << patch;
     }
+}
+
+TEST(ShadowVolume, HidesWhatLiesBehindALampsTopSeenFromTheCeilingTwoCentimetresAbove)
+{
+    // The two-light room's west lamp: its top 0.8 m square at y = 2.98,
+    // the eye on the ceiling (y = 3) over its middle, facing down.
+    const std::vector<Vec3> top{{0.6, 2.98, 1.6}, {0.6, 2.98, 2.4}, {1.4, 2.98, 2.4}, {1.4, 2.98, 1.6}};
+    const Vec3 eye{1.0, 3.0, 2.0};
+    const Plane ceiling = Plane::fromPointNormal(eye, {0, -1, 0});
+    for (bool reversed : {false, true}) {
+        std::vector<Vec3> polygon = top;
+        if (reversed)
+            std::ranges::reverse(polygon);
+        const ShadowVolume volume(eye, {polygon, {0, 1, 0}}, ceiling);
+        SCOPED_TRACE(reversed ? "clockwise" : "counter-clockwise");
+        ASSERT_FALSE(volume.empty());
+        EXPECT_TRUE(volume.hides(Vec3{1.0, 0.0, 2.0}));   // the floor below
+        EXPECT_TRUE(volume.hides(Vec3{5.9, 0.0, 0.1}));   // the floor's far corner
+        EXPECT_FALSE(volume.hides(Vec3{1.0, 2.99, 2.0})); // in the gap
+        EXPECT_FALSE(volume.hides(Vec3{5.0, 2.9, 2.0}));  // through the slit
+        // Behind the top's plane by more than its margin of 1e-6 m only.
+        EXPECT_FALSE(volume.hides(Vec3{1.0, 2.98 - 1e-7, 2.0}));
+        EXPECT_TRUE(volume.hides(Vec3{1.0, 2.98 - 1e-5, 2.0}));
+        // The ray past the edge x = 1.4 reaches the floor at x = 61; inside
+        // it only by more than 1e-5 radians.
+        EXPECT_FALSE(volume.hides(Vec3{61.0, 0.0, 2.0}));
+        EXPECT_FALSE(volume.hides(Vec3{60.9995, 0.0, 2.0}));
+        EXPECT_TRUE(volume.hides(Vec3{60.9, 0.0, 2.0}));
+        Box3 floor;
+        floor.extend({0, 0, 0});
+        floor.extend({6, 0.7, 4});
+        EXPECT_TRUE(volume.hides(floor));
+        Box3 wall = floor; // up to the ceiling: its top shows through the slit
+        wall.extend({0, 3, 0});
+        EXPECT_FALSE(volume.hides(wall));
+        EXPECT_FALSE(volume.hides(Box3{}));
+    }
+    // Seen from behind, the top would be a back face the painter may leave
+    // out; and a face reaching behind the shooter's plane is not wholly
+    // painted. Either way it hides nothing.
+    EXPECT_TRUE(ShadowVolume(Vec3{1.0, 2.9, 2.0}, {top, {0, 1, 0}}, Plane::fromPointNormal({1.0, 2.9, 2.0}, {0, 1, 0}))
+                    .empty());
+    const Plane low = Plane::fromPointNormal({1.0, 2.975, 2.0}, {0, -1, 0});
+    EXPECT_TRUE(ShadowVolume(Vec3{1.0, 3.0, 2.0}, {top, {0, 1, 0}}, low).empty());
+    EXPECT_TRUE(ShadowVolume(eye, {}, ceiling).empty());
+}
+
+TEST(PaintOrderCulling, TheFaceAcrossAGapHidesWhatLiesBehindItAndChangesNoPixel)
+{
+    // Every point of every patch in a gap (the ceiling over the lamps, the
+    // lamps' tops), rendered with the face across the gap as the occluder
+    // and without: the same item buffers, fewer pieces.
+    const PreparedScene p = test::prepared(test::loadSample("two-lights-room"));
+    const Hemicube h(60);
+    int gapPatches = 0;
+    for (model::Visibility mode : {model::Visibility::Painter, model::Visibility::ZBuffer}) {
+        SCOPED_TRACE(model::visibilityName(mode));
+        Visibility occluded(p, h, mode), whole(p, h, mode);
+        ItemBuffer a = occluded.makeBuffer(), b = whole.makeBuffer();
+        gapPatches = 0;
+        for (int patch = 0; patch < int(p.patches.size()); ++patch) {
+            const int across = gapFace(p, patch);
+            if (across < 0)
+                continue;
+            ++gapPatches;
+            const Occluder occluder{p.faces[size_t(across)].polygon, p.properties[size_t(across)].plane.normal};
+            const Vec3& normal = p.properties[size_t(p.patches[size_t(patch)].properties)].plane.normal;
+            for (const Vec3& point : shooterPoints(p, patch)) {
+                const ShooterFrame frame = shooterFrameAt(point, normal);
+                ASSERT_TRUE(occluded.render(frame, a, nullptr, occluder));
+                ASSERT_TRUE(whole.render(frame, b));
+                ASSERT_TRUE(std::ranges::equal(a.all(), b.all())) << "patch " << patch;
+            }
+        }
+        // Nodes left out whole (the floor's, the furniture's: 14 % of the
+        // pieces walked when written) and pieces in the shadow (37 % of
+        // those rasterised).
+        const VisibilityStats& with = occluded.stats();
+        const VisibilityStats& without = whole.stats();
+        EXPECT_LT(with.elementsVisited, without.elementsVisited);
+        EXPECT_LT(with.elementsRasterised * 4, without.elementsRasterised * 3)
+            << with.elementsRasterised << " of " << without.elementsRasterised;
+    }
+    EXPECT_GT(gapPatches, 8) << "the premise: the ceiling's patches over both lamps";
 }
