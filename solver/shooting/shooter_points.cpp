@@ -20,9 +20,7 @@ bool inside(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
     return glm::dot(glm::cross(b - a, x - a), n) >= 0.0 && glm::dot(glm::cross(c - b, x - b), n) >= 0.0 &&
            glm::dot(glm::cross(a - c, x - c), n) >= 0.0;
 }
-} // namespace
 
-namespace {
 // Which kind of shooter the patch is, and in a gap, the face across it.
 std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch)
 {

@@ -9,6 +9,10 @@ namespace regio::solver {
 namespace {
 constexpr double kBehindMargin = 1e-6; // metres behind the occluder's plane
 constexpr double kEdgeMargin = 1e-5;   // radians inside the occluder's edges
+// Metres the occluder's edges are moved inwards first: its pieces meet its
+// outline to within the builders' epsilon (model::kDistanceEpsilon), and a
+// ray that passes that close to an edge may miss them.
+constexpr double kInset = 10.0 * model::kDistanceEpsilon;
 } // namespace
 
 ShadowVolume::ShadowVolume(const Vec3& eye, const Occluder& hider, const Plane& shooterPlane)
@@ -29,8 +33,16 @@ ShadowVolume::ShadowVolume(const Vec3& eye, const Occluder& hider, const Plane& 
     const bool counterClockwise = glm::dot(model::newellNormal(occluder), front) > 0.0;
     const size_t n = occluder.size();
     for (size_t i = 0; i < n; ++i) {
-        const Vec3& a = occluder[counterClockwise ? i : n - 1 - i];
-        const Vec3& b = occluder[counterClockwise ? (i + 1) % n : (2 * n - 2 - i) % n];
+        Vec3 a = occluder[counterClockwise ? i : n - 1 - i];
+        Vec3 b = occluder[counterClockwise ? (i + 1) % n : (2 * n - 2 - i) % n];
+        const Vec3 along = b - a;
+        if (glm::length(along) <= 2.0 * kInset) {
+            m_edges.clear();
+            return;
+        }
+        const Vec3 inset = kInset * glm::normalize(glm::cross(front, along)); // into the polygon
+        a += inset;
+        b += inset;
         const Vec3 inward = glm::cross(b - eye, a - eye);
         const double length = glm::length(inward);
         if (length <= 0.0) {

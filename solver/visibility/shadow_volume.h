@@ -16,9 +16,10 @@
 // or win the depth test; where a solid rests on the polygon and it is not
 // meshed, the solid's faces towards the eye stand in front of it. Points
 // count as inside only with margins far wider than the rasteriser's
-// snapping (1e-5 radians from the polygon's edges, 1e-6 m behind its
-// plane), so a pixel centre that a hidden piece would cover lies well
-// inside the polygon's own pixels.
+// snapping and the pieces' own rounding (through the polygon 1e-5 m inside
+// its edges and 1e-5 radians from them, 1e-6 m behind its plane), so a
+// pixel centre that a hidden piece would cover lies well inside the
+// polygon's own pixels.
 #include "model/geometry/geometry.h"
 
 #include <span>

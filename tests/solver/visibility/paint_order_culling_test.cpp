@@ -270,6 +270,16 @@ TEST(ShadowVolume, HidesWhatLiesBehindALampsTopSeenFromTheCeilingTwoCentimetresA
         EXPECT_FALSE(volume.hides(Vec3{61.0, 0.0, 2.0}));
         EXPECT_FALSE(volume.hides(Vec3{60.9995, 0.0, 2.0}));
         EXPECT_TRUE(volume.hides(Vec3{60.9, 0.0, 2.0}));
+        // From an eye over the top's edge, 1 mm inside it, rays that cross
+        // the top 5 micrometres and 0.1 mm inside that edge, to a point ten
+        // times as far: the pieces meet the outline only to within a
+        // micrometre, so the first may miss them.
+        const Vec3 nearEdge{1.399, 3.0, 2.0};
+        const ShadowVolume fromNearEdge(nearEdge, {polygon, {0, 1, 0}}, ceiling);
+        for (const auto& [inside, hidden] : {std::pair{5e-6, false}, std::pair{1e-4, true}}) {
+            const Vec3 crossing{1.4 - inside, 2.98, 2.0};
+            EXPECT_EQ(fromNearEdge.hides(nearEdge + 10.0 * (crossing - nearEdge)), hidden) << inside;
+        }
         Box3 floor;
         floor.extend({0, 0, 0});
         floor.extend({6, 0.7, 4});
