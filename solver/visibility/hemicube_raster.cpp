@@ -93,13 +93,6 @@ int clipAgainst(int k, bool top, const Vec3* in, int count, Vec3* out)
     return n;
 }
 
-// ceil(num / 2^bits), an arithmetic shift.
-template <int bits>
-inline std::int64_t ceilShift(std::int64_t num)
-{
-    return -((-num) >> bits);
-}
-
 // Exact q = floor(num / den) and r = num - q den in [0, den), den > 0, from a
 // floating-point estimate corrected by the remainder: 64-bit idiv is the
 // slowest instruction of a triangle setup.
@@ -219,8 +212,8 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
     constexpr std::int64_t one = std::int64_t(1) << kSubpixelBits;
     constexpr std::int64_t half = one / 2;
     const int height = face == HemicubeFace::Top ? m_n : m_n / 2;
-    m_rowBegin = static_cast<int>(std::max<std::int64_t>(0, ceilShift<kSubpixelBits>(yMin - half)));
-    m_rowEnd = static_cast<int>(std::min<std::int64_t>(height, ceilShift<kSubpixelBits>(yMax - half)));
+    m_rowBegin = static_cast<int>(std::max<std::int64_t>(0, firstCentreFrom(yMin)));
+    m_rowEnd = static_cast<int>(std::min<std::int64_t>(height, firstCentreFrom(yMax)));
     if (m_rowBegin >= m_rowEnd)
         return false;
     // Likewise when no column centre lies in [xMin, xMax).
@@ -229,7 +222,7 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
         xMin = std::min(xMin, m_fixed[i].x);
         xMax = std::max(xMax, m_fixed[i].x);
     }
-    if (ceilShift<kSubpixelBits>(xMin - half) >= ceilShift<kSubpixelBits>(xMax - half))
+    if (firstCentreFrom(xMin) >= firstCentreFrom(xMax))
         return false;
     std::int64_t area2 = 0;
     for (int i = 0; i < count; ++i) {
@@ -262,8 +255,8 @@ bool HemicubeRaster::setupSpans(HemicubeFace face)
         const bool rightEdge = upward == positive;
         if (!upward)
             std::swap(p, q);
-        const int j0 = static_cast<int>(std::max<std::int64_t>(m_rowBegin, ceilShift<kSubpixelBits>(p.y - half)));
-        const int j1 = static_cast<int>(std::min<std::int64_t>(m_rowEnd, ceilShift<kSubpixelBits>(q.y - half)));
+        const int j0 = static_cast<int>(std::max<std::int64_t>(m_rowBegin, firstCentreFrom(p.y)));
+        const int j1 = static_cast<int>(std::min<std::int64_t>(m_rowEnd, firstCentreFrom(q.y)));
         if (j0 >= j1)
             continue;
         const std::int64_t dy = std::int64_t(q.y) - p.y;

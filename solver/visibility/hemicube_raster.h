@@ -176,14 +176,19 @@ public:
     std::span<const FixedVertex> lastProjection() const { return {m_fixed, static_cast<size_t>(m_fixedCount)}; }
 
 private:
+    // The first pixel (row or column) whose centre j + 1/2 lies at or after
+    // the fixed-point coordinate v: ceil(v - 1/2) in pixels, as an
+    // arithmetic shift.
+    static constexpr std::int64_t firstCentreFrom(std::int64_t v)
+    {
+        return -(((std::int64_t(1) << (kSubpixelBits - 1)) - v) >> kSubpixelBits);
+    }
     // False when no row centre or no column centre lies between the
     // triangle's lowest and highest vertex (as setupSpans decides it).
     static bool mayHoldPixelCentre(const FixedVertex& a, const FixedVertex& b, const FixedVertex& c)
     {
-        constexpr std::int32_t half = std::int32_t(1) << (kSubpixelBits - 1);
-        const auto centresBetween = [](std::int32_t lo, std::int32_t hi) {
-            // ceil((v - 1/2) / 1) in pixels, as an arithmetic shift.
-            return -((half - lo) >> kSubpixelBits) < -((half - hi) >> kSubpixelBits);
+        const auto centresBetween = [](std::int64_t lo, std::int64_t hi) {
+            return firstCentreFrom(lo) < firstCentreFrom(hi);
         };
         return centresBetween(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y})) &&
                centresBetween(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));

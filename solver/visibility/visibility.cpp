@@ -91,9 +91,10 @@ inline void Visibility::touch(int vertex)
     if (v.stamp == m_currentStamp)
         return;
     v.stamp = m_currentStamp;
-    v.local = m_frame.toLocal(m_scene.pieceVertices[static_cast<size_t>(vertex)]);
+    const Vec3& world = m_scene.pieceVertices[static_cast<size_t>(vertex)];
+    v.local = m_frame.toLocal(world);
     v.outcode = hemicubeOutcode(v.local);
-    if (!m_hidden.empty() && m_hidden.hides(m_scene.pieceVertices[static_cast<size_t>(vertex)]))
+    if (!m_hidden.empty() && m_hidden.hides(world))
         v.outcode |= kHiddenBit;
     // Project once per paint onto the painted faces whose frustum holds the
     // vertex (one, or two on a border): elements inside a face then skip
