@@ -40,13 +40,11 @@ std::vector<std::vector<std::vector<Vec3>>> nearOutlines(const PreparedScene& sc
         const Plane& plane = scene.properties[f].plane;
         for (int g : near[f]) {
             const std::vector<Vec3>& polygon = scene.faces[size_t(g)].polygon;
-            // The gap holds light worth resolving where one of the two emits
-            // into it (a lamp's glowing top under a ceiling). Over a panel
-            // that does not, the ceiling is dark inside the outline, which
-            // the panel hides from below; cut and split there, the two-light
-            // room took 1.39 times as long to solve (docs/performance.md).
-            if (!scene.properties[f].emits() && !scene.properties[size_t(g)].emits())
-                continue;
+            // Whether or not one of the two emits into the gap: over a panel
+            // that does not, the ceiling is dark inside the outline and lit
+            // a few centimetres outside it, and an element across the
+            // outline drew a dark ring 15 cm wide around the panel
+            // (docs/accuracy.md, "A dark gap's rim").
             if (glm::dot(plane.normal, scene.properties[size_t(g)].plane.normal) > kParallelCosine ||
                 footprintWidth(polygon) < minWidth)
                 continue;

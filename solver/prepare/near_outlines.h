@@ -14,7 +14,13 @@
 // place them (Heckbert 1992; Lischinski, Tampieri and Greenberg 1992), and
 // the refinement splits those along it before the first shot
 // (solver/shooting/adaptive_refinement.h): the cut alone left 25 cm
-// elements on either side, and the ring as it was.
+// elements on either side, and the ring as it was. Over a panel that does
+// not glow the gap is dark, and the light falls across the outline from
+// outside: the same cut and split (left whole, the ceiling showed a dark
+// ring 15 cm wide around each of the two-light room's panels, 12-25 % too
+// dark). With the cut, a ceiling patch lies over the panel or beside it,
+// and only those over it shoot from several points
+// (solver/shooting/shooter_points.h).
 #include "solver/prepare/prepared_scene.h"
 
 #include <vector>
@@ -28,8 +34,7 @@ inline constexpr double kNearOutlineGapPatches = 0.1;
 
 // For every face, the outlines of the faces that hang in front of it within
 // kNearOutlineGapPatches patch sizes, parallel to it within 5 degrees and
-// facing it, where one of the two emits, dropped onto its plane, where they
-// cross it. A face narrower than ShadowLineLimits::solidMinWidth patches
+// facing it, dropped onto its plane, where they cross it. A face narrower than ShadowLineLimits::solidMinWidth patches
 // draws none (a board's edge would only cut slivers, as a narrow solid
 // draws no shadow lines), and a face with more than eight faces in front of
 // it takes none at all: the lines run across the whole face and would cut

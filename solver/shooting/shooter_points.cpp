@@ -1,5 +1,6 @@
 #include "solver/shooting/shooter_points.h"
 
+#include "solver/prepare/face_polygon.h"
 #include "solver/prepare/facing_faces.h"
 #include "solver/visibility/item_buffer.h"
 
@@ -21,6 +22,39 @@ bool inside(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
            glm::dot(glm::cross(a - c, x - c), n) >= 0.0;
 }
 
+// The centroids of the k x k equal triangles of triangle abc: in
+// barycentric steps of 1/k, the k(k+1)/2 upright ones and the k(k-1)/2
+// turned ones between them.
+std::vector<Vec3> splitCentroids(const std::array<Vec3, 3>& corners, int k = kShooterSplits)
+{
+    const Vec3 a = corners[0], ab = (corners[1] - corners[0]) / double(k), ac = (corners[2] - corners[0]) / double(k);
+    std::vector<Vec3> points;
+    points.reserve(size_t(k * k));
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; i + j < k; ++j) {
+            points.push_back(a + (double(i) + 1.0 / 3.0) * ab + (double(j) + 1.0 / 3.0) * ac);
+            if (i + j + 1 < k)
+                points.push_back(a + (double(i) + 2.0 / 3.0) * ab + (double(j) + 2.0 / 3.0) * ac);
+        }
+    return points;
+}
+
+// Whether some of the patch's points lie over `polygon`: inside it seen
+// along the patch's normal.
+bool lieOver(const std::array<Vec3, 3>& corners, const std::vector<Vec3>& polygon)
+{
+    const Vec3 normal = glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
+    std::vector<Vec3> dropped;
+    dropped.reserve(polygon.size());
+    for (const Vec3& q : polygon)
+        dropped.push_back(q - normal * glm::dot(normal, q - corners[0]));
+    const std::vector<Vec3> points = splitCentroids(corners);
+    return std::any_of(points.begin(), points.end(), [&](const Vec3& x) {
+        return insideConvex(dropped, normal, x, -model::kDistanceEpsilon) ||
+               insideConvex(dropped, -normal, x, -model::kDistanceEpsilon);
+    });
+}
+
 // Which kind of shooter the patch is, and in a gap, the face across it.
 std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch)
 {
@@ -39,7 +73,9 @@ std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch
         if (f.polygon.size() < 3)
             continue;
         const double gap = polygonGap(corners, f.polygon);
-        if (gap * kGapShooterRatio < longest)
+        // Only a patch over the face is in the gap; one beside it (the
+        // ceiling just outside a lamp's outline) sees the room, not a slit.
+        if (gap * kGapShooterRatio < longest && lieOver(corners, f.polygon))
             return {ShooterKind::InGap, face};
         // A face that solids cover whole (a shelf board's end against its
         // side) has no elements and hides nothing.
@@ -83,19 +119,12 @@ std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, ShooterKi
     const std::array<Vec3, 3> corners{scene.vertices[size_t(p.vertices[0])], scene.vertices[size_t(p.vertices[1])],
                                       scene.vertices[size_t(p.vertices[2])]};
 
-    // The k x k equal triangles of the patch: in barycentric steps of 1/k,
-    // the k(k+1)/2 upright ones and the k(k-1)/2 turned ones between them.
-    constexpr int k = kShooterSplits;
-    const Vec3 a = corners[0], ab = (corners[1] - corners[0]) / double(k), ac = (corners[2] - corners[0]) / double(k);
-    std::vector<Vec3> points;
-    points.reserve(size_t(k * k));
-    for (int i = 0; i < k; ++i)
-        for (int j = 0; i + j < k; ++j) {
-            points.push_back(a + (double(i) + 1.0 / 3.0) * ab + (double(j) + 1.0 / 3.0) * ac);
-            if (i + j + 1 < k)
-                points.push_back(a + (double(i) + 2.0 / 3.0) * ab + (double(j) + 2.0 / 3.0) * ac);
-        }
-    return points;
+    if (kind == ShooterKind::InGap) {
+        const int across = gapFace(scene, patch);
+        if (!scene.properties[size_t(p.properties)].emits() && !scene.properties[size_t(across)].emits())
+            return splitCentroids(corners, kDarkGapShooterSplits);
+    }
+    return splitCentroids(corners);
 }
 
 std::vector<double> pointWeights(const PreparedScene& scene, int patch, std::span<const Vec3> points)

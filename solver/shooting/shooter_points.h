@@ -16,7 +16,10 @@
 // a thin row of pixels at the horizon that shows only the walls' top strip:
 // the light of the rim's elements, which would light the walls far down,
 // landed in a band along their top, 10 % to more than 50 % too bright over
-// 15-20 cm.
+// 15-20 cm. Only a patch over the face across the gap is in it: one beside
+// the face within the same distance (the ceiling just outside a lamp's
+// outline, which the ceiling is cut along: solver/prepare/near_outlines.h)
+// sees the room, not a slit, and shoots from its centroid.
 //
 // Behind a narrow face. A table's leg 6 cm wide, 0.33 m in front of a wall
 // of 0.5 m patches, casts from the whole patch a shadow that is penumbra all
@@ -59,8 +62,9 @@
 
 namespace regio::solver {
 
-// A patch whose facing face is closer than its longest edge over this is
-// in a gap and shoots from several points (see the top of the file).
+// A patch whose facing face is closer than its longest edge over this, and
+// some of whose points lie over that face, is in a gap and shoots from
+// several points (see the top of the file).
 inline constexpr double kGapShooterRatio = 10.0;
 // A facing face narrower than the patch's longest edge over this, closer
 // than that edge, makes the patch shoot from several points too.
@@ -72,9 +76,16 @@ inline constexpr double kNarrowFaceWidth = 4.0;
 // reference (3 points a side: +29 %, -16 %); a wall of 0.5 m patches sends
 // the back leg above within 0.1 % of rays (3 points a side: +1.3 %).
 inline constexpr int kShooterSplits = 4;
+// In a dark gap (neither face emits: the ceiling over a panel that glows
+// from its underside) the patch holds a few hundredths of what the ceiling
+// around it holds, and 2 x 2 points do: against a reference cut 3 cm fine
+// around such a panel the picture moved by less than 0.02 % anywhere, and
+// the two-light room's 44 such patches render 176 times instead of 704.
+inline constexpr int kDarkGapShooterSplits = 2;
 
 // Where a patch shoots from (see the top of the file): its centroid, or
-// kShooterSplits^2 points in a gap or behind a narrow face.
+// kShooterSplits^2 points in a gap or behind a narrow face
+// (kDarkGapShooterSplits^2 in a dark gap).
 enum class ShooterKind { Centre, InGap, BehindNarrowFace };
 ShooterKind shooterKind(const PreparedScene& scene, int patch);
 // The face across the gap from a patch in a gap (the lamp's top under a
@@ -88,7 +99,8 @@ double polygonWidth(std::span<const Vec3> polygon);
 
 // The points a shot of `patch` renders its hemicube from: its centroid, or
 // for a patch in a gap or behind a narrow face (above) kShooterSplits^2
-// points, each standing for an equal part of its area.
+// points (kDarkGapShooterSplits^2 in a dark gap), each standing for an
+// equal part of its area.
 std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch);
 std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, ShooterKind kind);
 

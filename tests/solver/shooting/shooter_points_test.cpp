@@ -6,6 +6,7 @@
 // reaches the leg behind it and the first leg's sides as rays say.
 #include "solver/shooting/shooter_points.h"
 
+#include "solver/prepare/facing_faces.h"
 #include "solver/shooting/near_field.h"
 #include "solver/shooting/shooting.h"
 #include "support/prepared_scenes.h"
@@ -204,6 +205,72 @@ TEST(ShooterPoints, APatchOverALampHungCloseUnderTheCeilingShootsFromSixteenPoin
             }
     for (int held : owners)
         EXPECT_EQ(held, 1);
+}
+
+TEST(ShooterPoints, OnlyTheCeilingsPatchesOverTheLampAreInTheGapThoseBesideItShootFromTheirCentroids)
+{
+    // The ceiling is cut along the lamp's outline (near_outlines.h), so each
+    // of its patches lies over the lamp or beside it. Those beside it within
+    // the gap ratio see the room, not a slit: they shoot from their
+    // centroids, as the rest of the ceiling does.
+    const PreparedScene s = test::prepared(lampUnderCeiling());
+    const size_t panelTop = test::faceNamed(s, "panel.body.py");
+    int over = 0, besideClose = 0;
+    for (size_t p = 0; p < s.patches.size(); ++p) {
+        if (s.faces[size_t(s.patches[p].properties)].id != "room.body.py")
+            continue;
+        const std::array<Vec3, 3> t = cornersOf(s, s.patches[p].vertices);
+        const Vec3& c = s.patches[p].centroid;
+        const bool isOver = c.x > kPanelMin.x && c.x < kPanelMax.x && c.z > kPanelMin.z && c.z < kPanelMax.z;
+        double longest = 0.0;
+        for (int i = 0; i < 3; ++i)
+            longest = std::max(longest, glm::distance(t[size_t(i)], t[size_t((i + 1) % 3)]));
+        const bool close = polygonGap(t, s.faces[panelTop].polygon) * kGapShooterRatio < longest;
+        if (isOver) {
+            ++over;
+            EXPECT_EQ(shooterKind(s, int(p)), ShooterKind::InGap) << p;
+            EXPECT_EQ(gapFace(s, int(p)), int(panelTop)) << p;
+        } else if (close) {
+            ++besideClose;
+            EXPECT_EQ(shooterKind(s, int(p)), ShooterKind::Centre) << p;
+            EXPECT_EQ(shooterPoints(s, int(p)).size(), 1u) << p;
+        }
+    }
+    EXPECT_GT(over, 0);
+    EXPECT_GT(besideClose, 0) << "patches along the outline, within the gap ratio";
+}
+
+TEST(ShooterPoints, APatchOverAPanelThatDoesNotGlowShootsFromFourPoints)
+{
+    // Over a lamp whose top glows the patch shoots from 16 points; over a
+    // panel that does not, the gap is dark and four points do as well.
+    model::Scene scene = lampUnderCeiling();
+    scene.objects.back().parts.front().material = "wall";
+    const PreparedScene s = test::prepared(scene);
+    const int over = patchOverThePanel(s);
+    ASSERT_GE(over, 0);
+    ASSERT_EQ(shooterKind(s, over), ShooterKind::InGap);
+    const std::vector<Vec3> points = shooterPoints(s, over);
+    ASSERT_EQ(points.size(), size_t(kDarkGapShooterSplits * kDarkGapShooterSplits));
+    // The centroids of the patch's four equal triangles: inside it, their
+    // mean its centroid.
+    const std::array<Vec3, 3> t = cornersOf(s, s.patches[size_t(over)].vertices);
+    const std::vector<Vec3> expected = subCentroids(t, kDarkGapShooterSplits);
+    ASSERT_EQ(expected.size(), points.size());
+    Vec3 mean{0.0};
+    for (size_t q = 0; q < points.size(); ++q) {
+        EXPECT_NEAR(glm::distance(points[q], expected[q]), 0.0, 1e-12) << q;
+        mean += points[q] / double(points.size());
+    }
+    EXPECT_NEAR(glm::distance(mean, s.patches[size_t(over)].centroid), 0.0, 1e-12);
+    // Its four elements each speak through one point (pointWeights).
+    const std::vector<double> w = pointWeights(s, over, points);
+    for (size_t e = 0; e < size_t(s.patches[size_t(over)].elementCount); ++e) {
+        double sum = 0.0;
+        for (size_t q = 0; q < points.size(); ++q)
+            sum += w[e * points.size() + q];
+        EXPECT_NEAR(sum, 1.0, 1e-12) << e;
+    }
 }
 
 TEST(ShooterPoints, AnElementSmallerThanThePointsAreApartSpeaksThroughTheNearestAndABigOneThroughAllInside)
