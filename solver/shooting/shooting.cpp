@@ -205,13 +205,18 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     if (points.size() > 1)
         splitFarShareByPoints(m_scene, shooter, weights, m_perPointItems, built.elements, built.near,
                               built.pointFactors, built.farScale);
+    if (points.size() == 1)
+        built.rowFactors.assign(built.factors.begin(), built.factors.end());
+    else
+        built.rowFactors.clear();
+    built.rowPointFactors.assign(built.pointFactors.begin(), built.pointFactors.end());
     FormFactorRow row;
     row.elements = built.elements;
-    row.factors = built.factors;
+    row.factors = built.rowFactors;
     row.near = built.near;
     row.farScale = built.farScale;
     row.points = static_cast<int>(points.size());
-    row.pointFactors = built.pointFactors;
+    row.pointFactors = built.rowPointFactors;
     row.escaped = m_perItem[kEmptyItem];
     row.blocked = m_perItem[kBlockerItem];
     const std::size_t bytes = row.bytes();
@@ -315,13 +320,13 @@ ShotResult Shooting::shoot(const std::atomic<bool>* cancel, std::mutex* applyLoc
     };
     if (points == 1)
         for (size_t k = 0; k < row->elements.size(); ++k)
-            receive(row->elements[k], m_pointPower[0] * row->factors[k]); // from the whole shooter
+            receive(row->elements[k], m_pointPower[0] * double(row->factors[k])); // from the whole shooter
     else
         for (size_t k = 0; k < row->elements.size(); ++k) {
-            const double* f = row->pointFactors.data() + k * points;
+            const float* f = row->pointFactors.data() + k * points;
             Rgb incident{0.0};
             for (size_t q = 0; q < points; ++q)
-                incident += m_pointPower[q] * f[q];
+                incident += m_pointPower[q] * double(f[q]);
             if (incident != Rgb{0.0}) // a near receiver's far factors are 0
                 receive(row->elements[k], incident);
         }
@@ -358,7 +363,7 @@ std::vector<double> Shooting::lastFormFactors() const
     for (size_t k = 0; k < m_lastRow->elements.size(); ++k)
         for (size_t q = 0; q < points; ++q)
             f[m_lastRow->elements[k]] +=
-                (points == 1 ? m_lastRow->factors[k] : m_lastRow->pointFactors[k * points + q]) * farScale[q];
+                double(points == 1 ? m_lastRow->factors[k] : m_lastRow->pointFactors[k * points + q]) * farScale[q];
     for (const NearTerm& t : m_lastRow->near)
         f[m_lastRow->elements[t.entry]] +=
             t.factor * m_scene.elements[static_cast<size_t>(patch.firstElement + t.shooterElement)].area / patch.area;
