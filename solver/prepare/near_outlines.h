@@ -34,8 +34,8 @@ inline constexpr double kNearOutlineGapPatches = 0.1;
 
 // For every face, the outlines of the faces that hang in front of it within
 // kNearOutlineGapPatches patch sizes, parallel to it within 5 degrees and
-// facing it, dropped onto its plane, where they cross it. A face narrower than ShadowLineLimits::solidMinWidth patches
-// draws none (a board's edge would only cut slivers, as a narrow solid
+// facing it, dropped onto its plane, where they cross it. A face narrower
+// than ShadowLineLimits::solidMinWidth patches draws none (a board's edge would only cut slivers, as a narrow solid
 // draws no shadow lines), and a face with more than eight faces in front of
 // it takes none at all: the lines run across the whole face and would cut
 // it into slivers.

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <utility>
 
 namespace regio::solver {
 
@@ -55,8 +54,9 @@ bool lieOver(const std::array<Vec3, 3>& corners, const std::vector<Vec3>& polygo
     });
 }
 
-// Which kind of shooter the patch is, and in a gap, the face across it.
-std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch)
+} // namespace
+
+ShooterSite shooterSite(const PreparedScene& scene, int patch)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
     const auto& facing = scene.faces[static_cast<size_t>(p.properties)].facing;
@@ -84,11 +84,10 @@ std::pair<ShooterKind, int> kindAndGapFace(const PreparedScene& scene, int patch
     }
     return {kind, -1};
 }
-} // namespace
 
-ShooterKind shooterKind(const PreparedScene& scene, int patch) { return kindAndGapFace(scene, patch).first; }
+ShooterKind shooterKind(const PreparedScene& scene, int patch) { return shooterSite(scene, patch).kind; }
 
-int gapFace(const PreparedScene& scene, int patch) { return kindAndGapFace(scene, patch).second; }
+int gapFace(const PreparedScene& scene, int patch) { return shooterSite(scene, patch).gapFace; }
 
 double polygonWidth(std::span<const Vec3> polygon)
 {
@@ -108,22 +107,20 @@ double polygonWidth(std::span<const Vec3> polygon)
 
 std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch)
 {
-    return shooterPoints(scene, patch, shooterKind(scene, patch));
+    return shooterPoints(scene, patch, shooterSite(scene, patch));
 }
 
-std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, ShooterKind kind)
+std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, const ShooterSite& site)
 {
     const Patch& p = scene.patches[static_cast<size_t>(patch)];
-    if (kind == ShooterKind::Centre)
+    if (site.kind == ShooterKind::Centre)
         return {p.centroid};
     const std::array<Vec3, 3> corners{scene.vertices[size_t(p.vertices[0])], scene.vertices[size_t(p.vertices[1])],
                                       scene.vertices[size_t(p.vertices[2])]};
 
-    if (kind == ShooterKind::InGap) {
-        const int across = gapFace(scene, patch);
-        if (!scene.properties[size_t(p.properties)].emits() && !scene.properties[size_t(across)].emits())
-            return splitCentroids(corners, kDarkGapShooterSplits);
-    }
+    if (site.kind == ShooterKind::InGap && !scene.properties[size_t(p.properties)].emits() &&
+        !scene.properties[size_t(site.gapFace)].emits())
+        return splitCentroids(corners, kDarkGapShooterSplits);
     return splitCentroids(corners);
 }
 

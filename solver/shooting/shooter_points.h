@@ -92,6 +92,12 @@ ShooterKind shooterKind(const PreparedScene& scene, int patch);
 // ceiling patch), -1 for a patch in none. From the patch's points it hides
 // most of the scene (solver/visibility/shadow_volume.h).
 int gapFace(const PreparedScene& scene, int patch);
+// Both at once: what a shot of the patch needs (Shooting::rowOf).
+struct ShooterSite {
+    ShooterKind kind = ShooterKind::Centre;
+    int gapFace = -1;
+};
+ShooterSite shooterSite(const PreparedScene& scene, int patch);
 
 // The smallest width of a convex polygon: the least, over its edges, of
 // the farthest corner's distance from the edge's line.
@@ -102,7 +108,7 @@ double polygonWidth(std::span<const Vec3> polygon);
 // points (kDarkGapShooterSplits^2 in a dark gap), each standing for an
 // equal part of its area.
 std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch);
-std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, ShooterKind kind);
+std::vector<Vec3> shooterPoints(const PreparedScene& scene, int patch, const ShooterSite& site);
 
 // Which of `points` speak for each element of `patch`: w[s * m + p] (m
 // points, s the element's offset in the patch), the points inside the

@@ -149,8 +149,9 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
     // A patch in a narrow gap or behind a narrow face sees the scene from
     // several points (shooter_points.h): each point's factors are kept
     // apart, the row's receivers come from their mean.
-    const ShooterKind kind = shooterKind(m_scene, shooter);
-    const std::vector<Vec3> points = shooterPoints(m_scene, shooter, kind);
+    const ShooterSite site = shooterSite(m_scene, shooter);
+    const ShooterKind kind = site.kind;
+    const std::vector<Vec3> points = shooterPoints(m_scene, shooter, site);
     if (points.size() == 1) {
         if (!renderer.render(shooterFrameOfPatch(m_scene, shooter), buffer, cancel))
             return nullptr;
@@ -160,7 +161,7 @@ const Shooting::FormFactorRow* Shooting::rowOf(int shooter, const std::atomic<bo
         // In a gap, the face across it hides most of the scene from every
         // point: what lies in its shadow is not painted (the same pixels).
         Occluder occluder;
-        if (const int across = kind == ShooterKind::InGap ? gapFace(m_scene, shooter) : -1; across >= 0)
+        if (const int across = site.gapFace; across >= 0)
             occluder = {m_scene.faces[static_cast<size_t>(across)].polygon,
                         m_scene.properties[static_cast<size_t>(across)].plane.normal};
         m_perPointItems.resize(points.size());
